@@ -1,0 +1,65 @@
+// Triangle meshes loaded from Wavefront OBJ files through tinyobjloader.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rasterlab/file_io.hpp"
+#include "rasterlab/vec.hpp"
+
+namespace rl {
+
+class MeshError : public FileError {
+  public:
+    using FileError::FileError;
+};
+
+// One corner of a triangle: indices into the mesh's arrays; -1 where the OBJ
+// gave no texture coordinate or normal.
+struct Corner {
+    int position = 0;
+    int uv = -1;
+    int normal = -1;
+};
+
+struct Triangle {
+    std::array<Corner, 3> corners;
+    int material = -1;  // index into Mesh::materials, -1 for none
+};
+
+// Texture file names as the MTL file gives them, resolved against its folder.
+struct Material {
+    std::string name;
+    std::filesystem::path diffuse;         // map_Kd
+    std::filesystem::path normal_tangent;  // map_Bump / bump (tangent-space normal map)
+    std::filesystem::path normal_object;   // norm (object-space normal map)
+    std::filesystem::path specular;        // map_Ks
+};
+
+struct Mesh {
+    std::filesystem::path source;  // the OBJ file, for texture discovery and messages
+    std::vector<vec3> positions;
+    std::vector<vec2> uvs;
+    std::vector<vec3> normals;
+    std::vector<Triangle> triangles;  // polygons are triangulated on loading
+    std::vector<Material> materials;
+
+    vec3 position(const Triangle& t, int corner) const {
+        return positions[t.corners[corner].position];
+    }
+};
+
+// Loads an OBJ and its MTL files. Throws MeshError naming the file and the
+// problem (with tinyobjloader's own message) for an unreadable or malformed
+// file: index 0 or out of range, a face of fewer than three vertices.
+// Warnings that do not stop loading are appended to `warnings`.
+Mesh load_obj(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+
+// The same from text, for tests; `name` stands for the file in messages.
+Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const std::string& name,
+               std::vector<std::string>* warnings = nullptr);
+
+}  // namespace rl

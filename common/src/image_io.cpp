@@ -1,0 +1,87 @@
+#include "rasterlab/image_io.hpp"
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cctype>
+#include <climits>
+#include <cstring>
+#include <memory>
+
+namespace rl {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
+Image load_with_stb(const std::filesystem::path& path) {
+    const std::vector<std::uint8_t> bytes = read_file(path);
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw FileError(path, "file too large");
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                               &channels))
+        throw FileError(path, std::string("not a readable image: ") + stbi_failure_reason());
+    try {
+        check_dimensions(width, height);  // refuse absurd sizes before decoding
+    } catch (const std::invalid_argument& e) {
+        throw FileError(path, e.what());
+    }
+    std::unique_ptr<stbi_uc, void (*)(void*)> data(
+        stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                              &channels, 4),
+        stbi_image_free);
+    if (!data) throw FileError(path, std::string("cannot decode: ") + stbi_failure_reason());
+    Image image(width, height);
+    // stb_image delivers the top row first; our images are bottom row first.
+    for (int y = 0; y < height; ++y) {
+        const stbi_uc* row = data.get() + static_cast<std::size_t>(height - 1 - y) * width * 4;
+        for (int x = 0; x < width; ++x) {
+            const stbi_uc* p = row + static_cast<std::size_t>(x) * 4;
+            image.set(x, y, Rgba{p[0], p[1], p[2], p[3]});
+        }
+    }
+    return image;
+}
+
+void append_bytes(void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<std::uint8_t>*>(context);
+    const auto* bytes = static_cast<const std::uint8_t*>(data);
+    out->insert(out->end(), bytes, bytes + size);
+}
+
+}  // namespace
+
+Image load_image(const std::filesystem::path& path) {
+    if (lower_extension(path) == ".tga") return read_tga(path);
+    return load_with_stb(path);
+}
+
+void write_png(const std::filesystem::path& path, const Image& image) {
+    Image top_first = image;
+    top_first.flip_vertically();
+    std::vector<std::uint8_t> png;
+    const int ok = stbi_write_png_to_func(append_bytes, &png, image.width(), image.height(), 4,
+                                          top_first.pixels().data(), image.width() * 4);
+    if (!ok) throw FileError(path, "PNG encoding failed");
+    write_file_atomically(path, png);
+}
+
+void save_image(const std::filesystem::path& path, const Image& image, bool keep_alpha) {
+    const std::string ext = lower_extension(path);
+    if (ext == ".tga") {
+        TgaWriteOptions options;
+        options.format = keep_alpha ? TgaPixelFormat::bgra32 : TgaPixelFormat::bgr24;
+        write_tga(path, image, options);
+    } else if (ext == ".png") {
+        write_png(path, image);
+    } else {
+        throw FileError(path, "unknown image extension '" + ext + "' (use .tga or .png)");
+    }
+}
+
+}  // namespace rl
