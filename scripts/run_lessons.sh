@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs every lesson with its defaults, writing each
+# lesson's image to out/<lesson>.tga (and a PNG beside it).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/setup.sh
+cmake --preset release
+cmake --build --preset release
+
+mkdir -p out
+shopt -s nullglob
+for program in build/lessons/[0-9][0-9]_*/[0-9][0-9]_*; do
+  [ -x "$program" ] || continue
+  lesson="$(basename "$program")"
+  echo "== $lesson"
+  "$program" -o "out/$lesson.tga"
+  build/tools/imgconv "out/$lesson.tga" "out/$lesson.png"
+done
+echo "images are in out/"

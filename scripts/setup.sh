@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs, with apt-get, every Debian package rasterlab builds with that is
+# not installed yet. Safe to run again: it does nothing when all are there.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config python3  # build tools
+  libtinyobjloader-dev                      # OBJ loading
+  libstb-dev                                # PNG/JPG in, PNG out, Perlin noise
+  libcli11-dev                              # command lines
+  libgtest-dev                              # unit tests
+  libbenchmark-dev                          # the labs' timing
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+echo "setup: installing ${missing[*]}"
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
+  "${missing[@]}"
+echo "setup: done"

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs every test: scripts/test.sh [preset]
+# The preset is release (default), debug or asan; see CMakePresets.json.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+preset="${1:-release}"
+
+scripts/setup.sh
+cmake --preset "$preset"
+cmake --build --preset "$preset"
+ctest --preset "$preset"
