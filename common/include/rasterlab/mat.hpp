@@ -83,7 +83,7 @@ struct Inversion {
 };
 
 template <std::size_t N, typename T>
-Inversion<N, T> invert(Mat<N, T> a, T epsilon = T{1e-6}) {
+Inversion<N, T> invert(Mat<N, T> a, T epsilon = static_cast<T>(1e-6)) {
     T scale{};
     for (const auto& row : a.rows)
         for (std::size_t j = 0; j < N; ++j) scale = std::max(scale, std::abs(row[j]));

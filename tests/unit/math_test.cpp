@@ -1,0 +1,79 @@
+// Identities the vector and matrix code must satisfy.
+#include <gtest/gtest.h>
+
+#include "rasterlab/mat.hpp"
+#include "rasterlab/vec.hpp"
+
+namespace {
+
+using namespace rl;
+
+TEST(Vec, ArithmeticAndProducts) {
+    const vec3 a{1, 2, 3}, b{4, 5, 6};
+    EXPECT_EQ(a + b, (vec3{5, 7, 9}));
+    EXPECT_EQ(b - a, (vec3{3, 3, 3}));
+    EXPECT_EQ(a * 2.0f, (vec3{2, 4, 6}));
+    EXPECT_EQ(a * b, (vec3{4, 10, 18}));
+    EXPECT_FLOAT_EQ(dot(a, b), 32.0f);
+    EXPECT_EQ(cross(vec3{1, 0, 0}, vec3{0, 1, 0}), (vec3{0, 0, 1}));  // right-handed
+    EXPECT_FLOAT_EQ(cross(vec2{1, 0}, vec2{0, 1}), 1.0f);             // counter-clockwise > 0
+}
+
+TEST(Vec, CrossIsPerpendicularAndAntiCommutative) {
+    const dvec3 a{0.3, -1.2, 2.5}, b{-0.7, 0.4, 1.1};
+    const dvec3 c = cross(a, b);
+    EXPECT_NEAR(dot(c, a), 0.0, 1e-12);
+    EXPECT_NEAR(dot(c, b), 0.0, 1e-12);
+    EXPECT_EQ(cross(b, a), -c);
+    // |a x b|^2 = |a|^2 |b|^2 - (a.b)^2 (Lagrange's identity)
+    EXPECT_NEAR(dot(c, c), dot(a, a) * dot(b, b) - dot(a, b) * dot(a, b), 1e-12);
+}
+
+TEST(Vec, NormalizeGivesUnitLengthAndKeepsZero) {
+    EXPECT_NEAR(length(normalize(vec3{3, 4, 12})), 1.0f, 1e-6f);
+    EXPECT_EQ(normalize(vec3{0, 0, 0}), (vec3{0, 0, 0}));
+    EXPECT_FLOAT_EQ(length(vec2{3, 4}), 5.0f);
+}
+
+TEST(Mat, IdentityAndProducts) {
+    const mat3 id = mat3::identity();
+    const mat3 m{{vec3{1, 2, 3}, vec3{0, 1, 4}, vec3{5, 6, 0}}};
+    EXPECT_EQ(m * id, m);
+    EXPECT_EQ(id * m, m);
+    EXPECT_EQ((m * vec3{1, 0, 0}), (vec3{1, 0, 5}));  // the first column
+    EXPECT_EQ(transpose(transpose(m)), m);
+    EXPECT_EQ(transpose(m)[0], (vec3{1, 0, 5}));
+    EXPECT_FLOAT_EQ(determinant(m), 1.0f);
+}
+
+TEST(Mat, TransposeOfProductIsProductOfTransposesReversed) {
+    const dmat4 a{{dvec4{1, 2, 0, 1}, dvec4{0, 1, 3, 0}, dvec4{2, 0, 1, 1}, dvec4{0, 0, 0, 1}}};
+    const dmat4 b{{dvec4{0, 1, 0, 2}, dvec4{1, 0, 0, 0}, dvec4{0, 0, 2, 1}, dvec4{3, 0, 0, 1}}};
+    EXPECT_EQ(transpose(a * b), transpose(b) * transpose(a));
+}
+
+TEST(Mat, InverseTimesMatrixIsIdentity) {
+    const mat4 m{{vec4{2, 0, 1, 3}, vec4{1, 1, 0, -1}, vec4{0, 3, 1, 2}, vec4{0, 0, 0, 1}}};
+    const auto inv = inverse(m);
+    ASSERT_TRUE(inv.has_value());
+    const mat4 product = m * *inv;
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t j = 0; j < 4; ++j) EXPECT_NEAR(product[i][j], i == j ? 1.0f : 0.0f, 1e-5f);
+}
+
+TEST(Mat, InversionReportsTheDeterminant) {
+    const dmat3 m{{dvec3{0, 2, 1}, dvec3{1, 0, 0}, dvec3{3, 1, 4}}};  // needs a row swap
+    const auto result = invert(m);
+    ASSERT_TRUE(result.inverse.has_value());
+    EXPECT_NEAR(result.determinant, determinant(m), 1e-12);
+}
+
+TEST(Mat, SingularMatricesHaveNoInverse) {
+    const mat3 rank2{{vec3{1, 2, 3}, vec3{2, 4, 6}, vec3{0, 1, 1}}};
+    EXPECT_FALSE(inverse(rank2).has_value());
+    EXPECT_FALSE(inverse(mat4{}).has_value());
+    const mat3 nearly{{vec3{1, 0, 0}, vec3{0, 1, 0}, vec3{0, 0, 1e-9f}}};
+    EXPECT_FALSE(inverse(nearly).has_value());
+}
+
+}  // namespace

@@ -1,0 +1,189 @@
+// OBJ loading: triangulation, index forms, and malformed files.
+#include <gtest/gtest.h>
+
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/mesh.hpp"
+#include "rasterlab/textures.hpp"
+#include "temp_dir.hpp"
+
+namespace {
+
+using rl::Mesh;
+
+constexpr const char* kSquare = R"(# a unit square as one quad
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0 1
+vn 0 0 1
+f 1/1/1 2/2/1 3/3/1 4/4/1
+)";
+
+TEST(Mesh, QuadBecomesTwoTriangles) {
+    const Mesh mesh = rl::parse_obj(kSquare, "", "square.obj");
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.positions.size(), 4u);
+    EXPECT_EQ(mesh.uvs.size(), 4u);
+    EXPECT_EQ(mesh.normals.size(), 1u);
+    for (const rl::Triangle& t : mesh.triangles)
+        for (const rl::Corner& c : t.corners) {
+            EXPECT_EQ(c.position, c.uv);  // the file pairs v i with vt i
+            EXPECT_EQ(c.normal, 0);
+        }
+    // The two triangles cover the square: their areas add up to 1.
+    float area = 0;
+    for (const rl::Triangle& t : mesh.triangles)
+        area += 0.5f * rl::length(rl::cross(mesh.position(t, 1) - mesh.position(t, 0),
+                                            mesh.position(t, 2) - mesh.position(t, 0)));
+    EXPECT_FLOAT_EQ(area, 1.0f);
+}
+
+TEST(Mesh, PolygonsAreFannedIntoNMinusTwoTriangles) {
+    const Mesh mesh = rl::parse_obj(R"(
+v 1 0 0
+v 0.309 0.951 0
+v -0.809 0.588 0
+v -0.809 -0.588 0
+v 0.309 -0.951 0
+f 1 2 3 4 5
+)",
+                                    "", "pentagon.obj");
+    EXPECT_EQ(mesh.triangles.size(), 3u);
+}
+
+TEST(Mesh, NegativeIndicesCountBackFromTheLatestVertex) {
+    const Mesh mesh = rl::parse_obj(R"(
+v 0 0 0
+v 1 0 0
+v 0 1 0
+f -3 -2 -1
+v 5 5 5
+f 1 2 -1
+)",
+                                    "", "relative.obj");
+    ASSERT_EQ(mesh.triangles.size(), 2u);
+    EXPECT_EQ(mesh.triangles[0].corners[2].position, 2);
+    EXPECT_EQ(mesh.triangles[1].corners[2].position, 3);
+}
+
+TEST(Mesh, MissingUvsAndNormalsAreMinusOne) {
+    const Mesh mesh =
+        rl::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n", "", "no-uv.obj");
+    ASSERT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0].corners[0].uv, -1);
+    EXPECT_EQ(mesh.triangles[0].corners[0].normal, 0);
+    const Mesh bare = rl::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "", "bare.obj");
+    EXPECT_EQ(bare.triangles[0].corners[1].normal, -1);
+}
+
+struct BadObj {
+    const char* name;
+    const char* text;
+    const char* problem;
+};
+
+class MalformedObj : public testing::TestWithParam<BadObj> {};
+
+TEST_P(MalformedObj, IsRefusedWithAClearMessage) {
+    const BadObj& bad = GetParam();
+    try {
+        rl::parse_obj(bad.text, "", bad.name);
+        FAIL() << "loaded a malformed OBJ";
+    } catch (const rl::MeshError& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(message.rfind(bad.name, 0), 0u) << message;
+        EXPECT_NE(message.find(bad.problem), std::string::npos) << message;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Corpus, MalformedObj,
+    testing::Values(BadObj{"index_zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero value"},
+                    BadObj{"index_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+                           "out of range"},
+                    BadObj{"uv_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/4\n",
+                           "texture coordinate index 4 is out of range"},
+                    BadObj{"quad_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 7\n",
+                           "invalid vertex index"},
+                    BadObj{"two_vertices.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "three or more"},
+                    BadObj{"no_faces.obj", "v 0 0 0\nv 1 0 0\n", "holds no faces"},
+                    BadObj{"empty.obj", "", "holds no faces"}),
+    [](const auto& param_info) {
+        std::string name = param_info.param.name;
+        return name.substr(0, name.find('.'));
+    });
+
+TEST(Mesh, UnknownAndGarbledLinesDoNotStopLoading) {
+    std::vector<std::string> warnings;
+    const Mesh mesh =
+        rl::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nfrobnicate 1 2 3\nv not numbers\n\nf 1 2 3\n", "",
+                      "garbled.obj", &warnings);
+    EXPECT_EQ(mesh.triangles.size(), 1u);
+}
+
+TEST(Mesh, UnreadableFileIsNamed) {
+    rl_test::TempDir dir;
+    EXPECT_THROW(rl::load_obj(dir.path() / "absent.obj"), rl::MeshError);
+    EXPECT_THROW(rl::load_obj(dir.path()), rl::MeshError);
+}
+
+TEST(Mesh, MaterialTexturesResolveAgainstTheObjFolder) {
+    rl_test::TempDir dir;
+    rl_test::write_text(dir.path() / "box.mtl",
+                        "newmtl wood\nmap_Kd wood.png\nmap_Ks wood_s.png\nbump wood_n.png\n"
+                        "norm wood_o.png\n");
+    rl_test::write_text(dir.path() / "box.obj",
+                        "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\n");
+    const Mesh mesh = rl::load_obj(dir.path() / "box.obj");
+    ASSERT_EQ(mesh.materials.size(), 1u);
+    EXPECT_EQ(mesh.triangles[0].material, 0);
+    EXPECT_EQ(mesh.materials[0].diffuse, dir.path() / "wood.png");
+    EXPECT_EQ(mesh.materials[0].specular, dir.path() / "wood_s.png");
+    EXPECT_EQ(mesh.materials[0].normal_tangent, dir.path() / "wood_n.png");
+    EXPECT_EQ(mesh.materials[0].normal_object, dir.path() / "wood_o.png");
+}
+
+TEST(Textures, FoundByTinyrendererNamesBesideTheObj) {
+    rl_test::TempDir dir;
+    rl_test::write_text(dir.path() / "head.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    rl::save_image(dir.path() / "head_diffuse.tga", rl::Image(2, 2, rl::Rgba{10, 20, 30, 255}));
+    rl::save_image(dir.path() / "head_nm_tangent.png", rl::Image(2, 2, rl::Rgba{1, 2, 3, 255}));
+    const Mesh mesh = rl::load_obj(dir.path() / "head.obj");
+
+    std::vector<std::string> warnings;
+    const rl::Texture diffuse = rl::load_texture(mesh, -1, rl::TextureRole::diffuse, warnings);
+    EXPECT_FALSE(diffuse.is_default);
+    EXPECT_EQ(diffuse.image.get(1, 1), (rl::Rgba{10, 20, 30, 255}));
+    const rl::Texture normals =
+        rl::load_texture(mesh, -1, rl::TextureRole::normal_tangent, warnings);
+    EXPECT_EQ(normals.source, dir.path() / "head_nm_tangent.png");
+    EXPECT_TRUE(warnings.empty());
+}
+
+TEST(Textures, MissingOrBrokenTexturesWarnAndFallBack) {
+    rl_test::TempDir dir;
+    rl_test::write_text(dir.path() / "m.mtl", "newmtl a\nmap_Kd gone.tga\n");
+    rl_test::write_text(dir.path() / "m.obj",
+                        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+    rl_test::write_text(dir.path() / "m_spec.tga", "definitely not a TGA");
+    const Mesh mesh = rl::load_obj(dir.path() / "m.obj");
+
+    std::vector<std::string> warnings;
+    const rl::Texture diffuse = rl::load_texture(mesh, 0, rl::TextureRole::diffuse, warnings);
+    EXPECT_TRUE(diffuse.is_default);
+    EXPECT_EQ(diffuse.image.get(0, 0), (rl::Rgba{255, 255, 255, 255}));
+    const rl::Texture spec = rl::load_texture(mesh, 0, rl::TextureRole::specular, warnings);
+    EXPECT_TRUE(spec.is_default);
+    const rl::Texture nm = rl::load_texture(mesh, 0, rl::TextureRole::normal_tangent, warnings);
+    EXPECT_EQ(nm.image.get(0, 0), (rl::Rgba{128, 128, 255, 255}));  // flat: (0, 0, 1)
+    ASSERT_EQ(warnings.size(), 3u);
+    EXPECT_NE(warnings[0].find("gone.tga"), std::string::npos) << warnings[0];
+    EXPECT_NE(warnings[1].find("m_spec.tga"), std::string::npos) << warnings[1];
+    EXPECT_NE(warnings[2].find("no nm_tangent texture"), std::string::npos) << warnings[2];
+}
+
+}  // namespace
