@@ -86,6 +86,10 @@ struct BadObj {
     const char* problem;
 };
 
+void PrintTo(const BadObj& bad, std::ostream* out) {
+    *out << bad.name;
+}
+
 class MalformedObj : public testing::TestWithParam<BadObj> {};
 
 TEST_P(MalformedObj, IsRefusedWithAClearMessage) {

@@ -78,6 +78,10 @@ std::vector<BadFile> corpus() {
     };
 }
 
+void PrintTo(const BadFile& bad, std::ostream* out) {
+    *out << bad.name;
+}
+
 class TgaBadInput : public testing::TestWithParam<BadFile> {};
 
 TEST_P(TgaBadInput, IsRefusedFromMemoryWithItsProblemNamed) {

@@ -40,6 +40,11 @@ struct Variant {
     bool top_row_first;
 };
 
+void PrintTo(const Variant& v, std::ostream* out) {
+    *out << "format " << static_cast<int>(v.format) << (v.rle ? " rle" : " raw")
+         << (v.top_row_first ? " top-first" : " bottom-first");
+}
+
 std::string variant_name(const testing::TestParamInfo<Variant>& info) {
     const char* format[] = {"grey8", "bgr24", "bgra32"};
     return std::string(format[static_cast<int>(info.param.format)]) +
