@@ -26,5 +26,19 @@ rasterlab_require(GTest_FOUND "GoogleTest" libgtest-dev)
 find_package(benchmark CONFIG QUIET)
 rasterlab_require(benchmark_FOUND "Google Benchmark" libbenchmark-dev)
 
+# Debian's own Python, which is where python3-matplotlib installs (a Python of
+# pyenv or a virtualenv earlier on PATH would not see it).
+if(EXISTS /usr/bin/python3 AND NOT Python3_EXECUTABLE)
+  set(Python3_EXECUTABLE /usr/bin/python3)
+endif()
 find_package(Python3 COMPONENTS Interpreter QUIET)
-rasterlab_require(Python3_FOUND "Python 3 (runs the docs snippet check)" python3)
+rasterlab_require(Python3_FOUND "Python 3 (docs snippet check, charts)" python3)
+execute_process(COMMAND ${Python3_EXECUTABLE} -c "import matplotlib"
+                RESULT_VARIABLE matplotlib_missing OUTPUT_QUIET ERROR_QUIET)
+if(matplotlib_missing)
+  set(matplotlib_FOUND FALSE)
+else()
+  set(matplotlib_FOUND TRUE)
+endif()
+rasterlab_require(matplotlib_FOUND "matplotlib for ${Python3_EXECUTABLE} (draws the lab charts)"
+                  python3-matplotlib)

@@ -1,5 +1,5 @@
 # Our own targets compile with these warnings and stay clean of them.
 function(rasterlab_warnings target)
-  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wconversion
-    -Wno-sign-conversion)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic -Wshadow -Wfloat-conversion
+    )
 endfunction()

@@ -9,6 +9,7 @@
 
 #include "model_builder.hpp"
 #include "models.hpp"
+#include "rasterlab/random.hpp"
 #include "texture_maps.hpp"
 
 namespace assets {
@@ -17,22 +18,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr int kSubdivisions = 4;  // 20 * 4^4 = 5120 triangles
 constexpr int kSize = 512;
-
-// SplitMix64: a tiny generator whose output is the same on every platform
-// (std::uniform_real_distribution is not).
-class Random {
-  public:
-    explicit Random(std::uint64_t seed) : state_(seed) {}
-    double uniform() {  // in [0, 1)
-        std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    }
-
-  private:
-    std::uint64_t state_;
-};
 
 struct Icosphere {
     std::vector<dvec3> points;              // on the unit sphere
@@ -84,7 +69,7 @@ Model rock_mesh() {
     Icosphere sphere = icosahedron();
     for (int i = 0; i < kSubdivisions; ++i) subdivide(sphere);
 
-    Random random(20261122);
+    rl::SplitMix64 random(20261122);
     Model m;
     m.name = "rock";
     m.comment =

@@ -15,6 +15,12 @@ A page shows it between two HTML comments, which this script fills:
     ```
     <!-- /snippet -->
 
+A page can also include a generated file verbatim (the labs' tables):
+
+    <!-- include: docs/charts/01_lines.md -->
+    ...the file's text...
+    <!-- /include -->
+
 --check (the default) fails when a page's copy is stale or names a region
 that does not exist; --fill rewrites the pages' copies from the sources.
 """
@@ -30,6 +36,10 @@ SNIPPET = re.compile(
     r"(<!-- snippet: (?P<file>[^#\s]+)#(?P<region>[\w.-]+) -->\n)"
     r"(?P<body>.*?)"
     r"(<!-- /snippet -->)",
+    re.S,
+)
+INCLUDE = re.compile(
+    r"(<!-- include: (?P<file>\S+) -->\n)(?P<body>.*?)(<!-- /include -->)",
     re.S,
 )
 LANGUAGES = {".cpp": "cpp", ".hpp": "cpp", ".cmake": "cmake", ".py": "python", ".sh": "bash"}
@@ -60,6 +70,13 @@ def rendered(match: re.Match) -> str:
     return f"{match.group(1)}```{language}\n{code}```\n{match.group(5)}"
 
 
+def included(match: re.Match) -> str:
+    source = ROOT / match.group("file")
+    if not source.is_file():
+        raise LookupError(f"no file {match.group('file')} to include")
+    return f"{match.group(1)}{source.read_text()}{match.group(4)}"
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     mode = parser.add_mutually_exclusive_group()
@@ -75,11 +92,11 @@ def main() -> int:
     for page in sorted((ROOT / "docs").glob("*.md")):
         text = page.read_text()
         try:
-            updated = SNIPPET.sub(rendered, text)
+            updated = INCLUDE.sub(included, SNIPPET.sub(rendered, text))
         except LookupError as error:
             problems.append(f"{page.relative_to(ROOT)}: {error}")
             continue
-        count += len(SNIPPET.findall(text))
+        count += len(SNIPPET.findall(text)) + len(INCLUDE.findall(text))
         if updated != text:
             if options.fill:
                 page.write_text(updated)

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config python3  # build tools
+  python3-matplotlib                        # the labs' charts
   libtinyobjloader-dev                      # OBJ loading
   libstb-dev                                # PNG/JPG in, PNG out, Perlin noise
   libcli11-dev                              # command lines

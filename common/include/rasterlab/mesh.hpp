@@ -58,6 +58,12 @@ struct Mesh {
 // Warnings that do not stop loading are appended to `warnings`.
 Mesh load_obj(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
 
+// The path of one of the project's own models, e.g. project_model("rock")
+// for obj/rock.obj: what the lessons load when given no --model.
+inline std::filesystem::path project_model(const std::string& name) {
+    return std::filesystem::path(RASTERLAB_OBJ_DIR) / (name + ".obj");
+}
+
 // The same from text, for tests; `name` stands for the file in messages.
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const std::string& name,
                std::vector<std::string>* warnings = nullptr);
