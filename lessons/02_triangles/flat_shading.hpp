@@ -1,0 +1,32 @@
+// Drawing a mesh with one colour per face: Lambert's law with the face's own
+// normal, orthographic projection, back faces culled.
+#pragma once
+
+#include "raster.hpp"
+#include "rasterlab/image.hpp"
+#include "rasterlab/mesh.hpp"
+
+namespace triangles {
+
+struct FlatOptions {
+    RasterMethod method = RasterMethod::edge;
+    bool cull_back_faces = true;
+    rl::vec3 light_direction{0.3f, 0.5f, 1.0f};  // towards the light; normalised on use
+    rl::Rgba colour{235, 225, 205, 255};
+};
+
+struct FlatStats {
+    std::size_t drawn = 0, culled = 0, refused = 0;
+};
+
+// Lambert's cosine law: a face lit at an angle receives light in proportion
+// to the cosine, n . l (clamped at 0: faces turned away get none).
+float lambert(rl::vec3 normal, rl::vec3 to_light);
+
+FlatStats draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options);
+
+// The classic first picture: three triangles (red, white, green) in a
+// 200 x 200 image, as tinyrenderer's second lesson draws them.
+rl::Image three_triangles(RasterMethod method);
+
+}  // namespace triangles

@@ -1,0 +1,34 @@
+// Bounding box + barycentric coordinates, in float: test every pixel centre
+// in the triangle's bounding box. The simplest correct-looking method, and
+// the one whose failures lesson 02 measures: a pixel centre exactly on an
+// edge shared by two triangles is drawn by both.
+#pragma once
+
+#include "triangle2.hpp"
+
+namespace triangles {
+
+// [doc:raster-bbox]
+template <class Shade>
+bool rasterize_bbox(const Triangle2& t, int width, int height, Shade&& shade) {
+    if (!all_finite(t)) return false;
+    const float area = signed_area2(t);
+    if (area == 0.0f) return true;  // degenerate: covers nothing
+    const PixelRange xs = centres_between(std::min({t.v[0].x, t.v[1].x, t.v[2].x}),
+                                          std::max({t.v[0].x, t.v[1].x, t.v[2].x}), width);
+    const PixelRange ys = centres_between(std::min({t.v[0].y, t.v[1].y, t.v[2].y}),
+                                          std::max({t.v[0].y, t.v[1].y, t.v[2].y}), height);
+    for (int y = ys.first; y <= ys.last; ++y)
+        for (int x = xs.first; x <= xs.last; ++x) {
+            const rl::vec2 p{x + 0.5f, y + 0.5f};
+            // Each weight is the area of the sub-triangle opposite its vertex.
+            const rl::vec3 bary{rl::cross(t.v[2] - t.v[1], p - t.v[1]) / area,
+                                rl::cross(t.v[0] - t.v[2], p - t.v[2]) / area,
+                                rl::cross(t.v[1] - t.v[0], p - t.v[0]) / area};
+            if (bary.x >= 0 && bary.y >= 0 && bary.z >= 0) shade(x, y, bary);
+        }
+    return true;
+}
+// [/doc:raster-bbox]
+
+}  // namespace triangles

@@ -1,0 +1,100 @@
+// The production method: vertices snapped to fixed point (8 sub-pixel bits),
+// edge functions evaluated in 64-bit integers and stepped incrementally from
+// pixel to pixel, and the top-left rule for pixel centres exactly on an edge,
+// so that triangles sharing an edge cover each pixel exactly once.
+#pragma once
+
+#include <cstdint>
+#include <utility>
+
+#include "triangle2.hpp"
+
+namespace triangles {
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr std::int64_t kSubpixels = std::int64_t{1} << kSubpixelBits;  // 256 per pixel
+
+// Vertices must satisfy |x|, |y| <= 2^22 pixels (4,194,304): then every
+// coordinate difference fits 31 bits and every edge-function product 62.
+// Beyond that the triangle is refused; lesson 05's clipping keeps real
+// scenes far inside.
+inline constexpr float kMaxFixedCoordinate = 4194304.0f;
+
+struct FixedPoint {
+    std::int64_t x, y;  // in 1/256 pixel
+};
+
+inline FixedPoint snap(rl::vec2 p) {
+    return {static_cast<std::int64_t>(std::llround(p.x * static_cast<float>(kSubpixels))),
+            static_cast<std::int64_t>(std::llround(p.y * static_cast<float>(kSubpixels)))};
+}
+
+// Edge a->b of a counter-clockwise triangle. A centre exactly on the edge
+// belongs to the triangle when the edge is a left edge (it runs downwards:
+// the inside is to its right) or a top edge (horizontal, running to -x: the
+// inside is below). See docs/02_triangles.md for the derivation.
+// [doc:top-left]
+inline bool is_top_left(FixedPoint a, FixedPoint b) {
+    const std::int64_t dx = b.x - a.x, dy = b.y - a.y;
+    return dy < 0 || (dy == 0 && dx < 0);
+}
+// [/doc:top-left]
+
+// [doc:raster-edge]
+template <class Shade>
+bool rasterize_edge(const Triangle2& t, int width, int height, Shade&& shade) {
+    if (!all_finite(t)) return false;
+    for (const rl::vec2& p : t.v)
+        if (std::abs(p.x) > kMaxFixedCoordinate || std::abs(p.y) > kMaxFixedCoordinate)
+            return false;
+    FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
+    std::int64_t area =
+        (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    if (area == 0) return true;
+    int order[3] = {0, 1, 2};  // which input vertex each weight belongs to
+    if (area < 0) {            // make it counter-clockwise; remember the swap
+        std::swap(v[1], v[2]);
+        std::swap(order[1], order[2]);
+        area = -area;
+    }
+    // Edge k runs between the two vertices other than k; E_k > 0 inside.
+    struct Edge {
+        std::int64_t step_x, step_y, row, bias;
+    } e[3];
+    const auto to_pixels = [](std::int64_t fixed) {
+        return static_cast<float>(fixed) / kSubpixels;
+    };
+    const PixelRange xs = centres_between(to_pixels(std::min({v[0].x, v[1].x, v[2].x})),
+                                          to_pixels(std::max({v[0].x, v[1].x, v[2].x})), width);
+    const PixelRange ys = centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
+                                          to_pixels(std::max({v[0].y, v[1].y, v[2].y})), height);
+    if (xs.first > xs.last || ys.first > ys.last) return true;
+    const FixedPoint start{xs.first * kSubpixels + kSubpixels / 2,
+                           ys.first * kSubpixels + kSubpixels / 2};
+    for (int k = 0; k < 3; ++k) {
+        const FixedPoint a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+        e[k].step_x = -(b.y - a.y) * kSubpixels;  // change of E per pixel to the right
+        e[k].step_y = (b.x - a.x) * kSubpixels;   // ... and per pixel up
+        e[k].row = (b.x - a.x) * (start.y - a.y) - (b.y - a.y) * (start.x - a.x);
+        e[k].bias = is_top_left(a, b) ? 0 : -1;  // on the edge: in only for top-left edges
+    }
+    const float inverse_area = 1.0f / static_cast<float>(area);
+    for (int y = ys.first; y <= ys.last; ++y) {
+        std::int64_t w0 = e[0].row, w1 = e[1].row, w2 = e[2].row;
+        for (int x = xs.first; x <= xs.last; ++x) {
+            if ((w0 + e[0].bias) >= 0 && (w1 + e[1].bias) >= 0 && (w2 + e[2].bias) >= 0) {
+                float weight[3];
+                weight[order[0]] = static_cast<float>(w0) * inverse_area;
+                weight[order[1]] = static_cast<float>(w1) * inverse_area;
+                weight[order[2]] = static_cast<float>(w2) * inverse_area;
+                shade(x, y, rl::vec3{weight[0], weight[1], weight[2]});
+            }
+            w0 += e[0].step_x, w1 += e[1].step_x, w2 += e[2].step_x;
+        }
+        for (Edge& edge : e) edge.row += edge.step_y;
+    }
+    return true;
+}
+// [/doc:raster-edge]
+
+}  // namespace triangles

@@ -1,0 +1,41 @@
+// A triangle in window coordinates (pixel (i, j) has its centre at
+// (i + 0.5, j + 0.5)), with the helpers every rasterizer shares.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+#include "rasterlab/vec.hpp"
+
+namespace triangles {
+
+struct Triangle2 {
+    rl::vec2 v[3];
+};
+
+// Twice the signed area: positive when the vertices run counter-clockwise
+// (window y points up), which is what a front face looks like.
+inline float signed_area2(const Triangle2& t) {
+    return rl::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]);
+}
+
+inline bool all_finite(const Triangle2& t) {
+    for (const rl::vec2& p : t.v)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
+    return true;
+}
+
+// The range of pixel indices whose centres lie in [low, high], clamped to
+// [0, size - 1]; empty (first > last) when none do. Safe for any finite input.
+struct PixelRange {
+    int first, last;
+};
+
+inline PixelRange centres_between(float low, float high, int size) {
+    // Centre i + 0.5 >= low  <=>  i >= low - 0.5; clamp in float before converting.
+    const float first = std::clamp(std::ceil(low - 0.5f), 0.0f, static_cast<float>(size));
+    const float last = std::clamp(std::floor(high - 0.5f), -1.0f, static_cast<float>(size - 1));
+    return {static_cast<int>(first), static_cast<int>(last)};
+}
+
+}  // namespace triangles

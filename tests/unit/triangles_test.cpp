@@ -1,0 +1,134 @@
+// Lesson 02's stability cases. The fixed-point edge rasterizer must agree
+// with the exact rule everywhere; the float methods' failures are measured
+// and pinned here, so a change that hides or worsens them shows up.
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <set>
+
+#include "triangle_measure.hpp"
+
+namespace {
+
+using triangles::RasterMethod;
+using triangles::Triangle2;
+
+std::set<std::pair<int, int>> pixels(RasterMethod m, const Triangle2& t, int size = 64) {
+    const auto list = triangles::covered_pixels(m, t, size, size);
+    return {list.begin(), list.end()};
+}
+
+std::set<std::pair<int, int>> reference(const Triangle2& t, int size = 64) {
+    std::set<std::pair<int, int>> out;
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x)
+            if (triangles::reference_covers(t, x, y)) out.insert({x, y});
+    return out;
+}
+
+class EveryMethod : public testing::TestWithParam<RasterMethod> {};
+
+TEST_P(EveryMethod, ZeroAreaTrianglesCoverNothing) {
+    EXPECT_TRUE(
+        pixels(GetParam(), {{{1.5f, 1.5f}, {10.5f, 10.5f}, {20.5f, 20.5f}}}).empty());  // collinear
+    EXPECT_TRUE(pixels(GetParam(), {{{5, 5}, {5, 5}, {5, 5}}}).empty());
+}
+
+TEST_P(EveryMethod, NanAndInfinityAreRefusedWithoutDrawing) {
+    const float nan = std::numeric_limits<float>::quiet_NaN(),
+                inf = std::numeric_limits<float>::infinity();
+    for (const Triangle2& t :
+         {Triangle2{{{nan, 1}, {5, 5}, {9, 1}}}, Triangle2{{{1, 1}, {inf, 5}, {9, 1}}}}) {
+        int calls = 0;
+        EXPECT_FALSE(
+            triangles::rasterize(GetParam(), t, 16, 16, [&](int, int, rl::vec3) { ++calls; }));
+        EXPECT_EQ(calls, 0);
+    }
+}
+
+TEST_P(EveryMethod, TrianglesPartlyOrFarOffScreenStayInsideTheImage) {
+    // Any pixel outside would trip the debug bounds check or the sanitizers.
+    for (const Triangle2& t : {Triangle2{{{-100, -100}, {40, 10}, {10, 300}}},
+                               Triangle2{{{-5e5f, -5e5f}, {5e5f, -5e5f}, {0, 5e5f}}},
+                               Triangle2{{{1e6f, 1e6f}, {2e6f, 1e6f}, {1e6f, 2e6f}}}}) {
+        triangles::rasterize(GetParam(), t, 32, 32, [&](int x, int y, rl::vec3) {
+            ASSERT_TRUE(x >= 0 && y >= 0 && x < 32 && y < 32) << x << "," << y;
+        });
+    }
+}
+
+TEST_P(EveryMethod, BarycentricWeightsInterpolateThePixelCentre) {
+    const Triangle2 t{{{2.25f, 3.5f}, {40.75f, 9.0f}, {12.0f, 50.5f}}};
+    triangles::rasterize(GetParam(), t, 64, 64, [&](int x, int y, rl::vec3 b) {
+        const rl::vec2 p = t.v[0] * b.x + t.v[1] * b.y + t.v[2] * b.z;
+        EXPECT_NEAR(p.x, x + 0.5f, 1e-3f);
+        EXPECT_NEAR(p.y, y + 0.5f, 1e-3f);
+        EXPECT_NEAR(b.x + b.y + b.z, 1.0f, 1e-5f);
+    });
+}
+
+INSTANTIATE_TEST_SUITE_P(All, EveryMethod, testing::ValuesIn(triangles::kRasterMethods),
+                         [](const auto& param_info) { return triangles::name(param_info.param); });
+
+TEST(EdgeRasterizer, MatchesTheExactRuleOnRandomTrianglesAndTies) {
+    for (const auto& scene :
+         {triangles::random_triangles(300, 60, 64, 11), triangles::tie_triangles(300, 64, 12)}) {
+        const auto score = triangles::score_coverage(RasterMethod::edge, scene, 64, 64);
+        EXPECT_EQ(score.wrong(), 0);
+        EXPECT_GT(score.reference_pixels, 1000);
+    }
+}
+
+TEST(EdgeRasterizer, NeedlesAndSliversMatchTheExactRule) {
+    const Triangle2 needle{{{0.5f, 0.5f}, {63.5f, 1.0f}, {63.5f, 0.75f}}};
+    const Triangle2 sliver{{{3.0f, 60.0f}, {60.0f, 3.0f}, {60.1f, 3.2f}}};
+    const Triangle2 on_centres{{{4.5f, 4.5f}, {30.5f, 4.5f}, {4.5f, 30.5f}}};
+    for (const Triangle2& t : {needle, sliver, on_centres})
+        EXPECT_EQ(pixels(RasterMethod::edge, t), reference(t));
+}
+
+TEST(EdgeRasterizer, BothWindingsCoverTheSamePixels) {
+    for (const Triangle2& t : triangles::random_triangles(100, 200, 64, 13))
+        EXPECT_EQ(pixels(RasterMethod::edge, t),
+                  pixels(RasterMethod::edge, {{t.v[0], t.v[2], t.v[1]}}));
+}
+
+TEST(EdgeRasterizer, FansAndGridsCoverEveryPixelExactlyOnce) {
+    for (const auto& mesh :
+         {triangles::disc_fan({32.5f, 32.5f}, 28, 24), triangles::jittered_grid(6, 64, 4, 3)}) {
+        const auto score = triangles::score_watertight(RasterMethod::edge, mesh, 64, 64);
+        EXPECT_EQ(score.double_covered, 0);
+        EXPECT_EQ(score.holes, 0);
+        EXPECT_GT(score.pixels, 1500);
+    }
+}
+
+TEST(EdgeRasterizer, HugeCoordinatesWithinRangeStayExactAndBeyondAreRefused) {
+    // A triangle reaching 3 million pixels out, still inside the fixed-point range.
+    const Triangle2 huge{{{-3e6f, -1e6f}, {3e6f, -2e6f}, {10.25f, 3e6f}}};
+    EXPECT_EQ(pixels(RasterMethod::edge, huge), reference(huge));
+    const Triangle2 beyond{{{-5e6f, 0}, {5e6f, 0}, {0, 5e6f}}};  // past 2^22 pixels
+    EXPECT_FALSE(
+        triangles::rasterize(RasterMethod::edge, beyond, 64, 64, [](int, int, rl::vec3) {}));
+}
+
+// The weak methods, measured.
+TEST(FloatRasterizers, BoundingBoxDrawsSharedEdgesTwice) {
+    const auto fan = triangles::disc_fan({32.5f, 32.5f}, 28, 24);
+    const auto score = triangles::score_watertight(RasterMethod::bbox, fan, 64, 64);
+    EXPECT_GT(score.double_covered, 0);  // every centre on a shared edge, including the hub
+}
+
+TEST(FloatRasterizers, ScanlineIsWatertightButBreaksTiesTheOtherWay) {
+    // Half-open rows [bottom, top) and columns [left, right): a bottom-left
+    // rule. Consistent across shared edges, but not the top-left rule.
+    const auto fan = triangles::disc_fan({32.5f, 32.5f}, 28, 24);
+    const auto mesh = triangles::score_watertight(RasterMethod::scanline, fan, 64, 64);
+    EXPECT_EQ(mesh.double_covered, 0);
+    EXPECT_EQ(mesh.holes, 0);
+    const Triangle2 flat_top{
+        {{4.5f, 4.5f}, {30.5f, 20.5f}, {4.5f, 20.5f}}};  // top edge through centres
+    EXPECT_NE(pixels(RasterMethod::scanline, flat_top), reference(flat_top));
+}
+
+}  // namespace
