@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "flat_shading.hpp"
+#include "overdraw.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
 
@@ -14,7 +15,7 @@ int main(int argc, char** argv) {
     std::string output = "02_triangles.tga";
     std::string method_name = "edge";
     int width = 800, height = 800;
-    bool no_cull = false, test_image = false;
+    bool no_cull = false, test_image = false, overdraw = false;
     std::vector<float> light{0.3f, 0.5f, 1.0f};
     app.add_option("-m,--model", model, "OBJ file to draw")->capture_default_str();
     app.add_option("-o,--output", output, "Image to write (.tga or .png)")->capture_default_str();
@@ -32,10 +33,20 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_flag("--no-cull", no_cull, "Draw back faces too");
     app.add_flag("--test-image", test_image, "Draw the classic three triangles (200x200) instead");
+    app.add_flag(
+        "--overdraw", overdraw,
+        "Draw a fan of 12 triangles sharing a hub (48x48) coloured by how often each pixel "
+        "is drawn: grey once, red twice or more");
     CLI11_PARSE(app, argc, argv);
 
     return rl::guarded_main("02_triangles", [&] {
         const triangles::RasterMethod method = *triangles::parse_raster_method(method_name);
+        if (overdraw) {
+            rl::save_image(output, triangles::overdraw_fan(method, 48, 12));
+            std::printf("overdraw fan drawn with %s into %s\n", method_name.c_str(),
+                        output.c_str());
+            return 0;
+        }
         if (test_image) {
             rl::save_image(output, triangles::three_triangles(method));
             std::printf("three triangles drawn with %s into %s\n", method_name.c_str(),

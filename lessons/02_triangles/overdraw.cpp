@@ -1,0 +1,24 @@
+#include "overdraw.hpp"
+
+#include "triangle_measure.hpp"
+
+namespace triangles {
+
+rl::Image overdraw_fan(RasterMethod method, int size, int slices) {
+    rl::Grid<int> count(size, size, 0);
+    const float hub = size / 2 + 0.5f;
+    for (const Triangle2& t : disc_fan({hub, hub}, size * 0.42f, slices))
+        rasterize(method, t, size, size, [&](int x, int y, rl::vec3) { ++count.at(x, y); });
+    rl::Image image(size, size);
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const int n = count.get(x, y);
+            image.set(x, y,
+                      n == 0   ? rl::Rgba{0, 0, 0, 255}
+                      : n == 1 ? rl::Rgba{150, 150, 150, 255}
+                               : rl::Rgba{230, 30, 30, 255});
+        }
+    return image;
+}
+
+}  // namespace triangles
