@@ -110,7 +110,15 @@ def main():
     if options.logx:
         axes.set_xscale("log")
     if options.logy:
-        axes.set_yscale("symlog", linthresh=1e-4) if any(number(r[options.y]) == 0 for r in rows) else axes.set_yscale("log")
+        ys = [number(r[options.y]) for r in rows]
+        positive = [y for y in ys if y and y > 0]
+        if any(y == 0 for y in ys):
+            # Zero is a result here (an exact method): a linear stretch near 0, log above.
+            smallest = min(positive) if positive else 1.0
+            axes.set_yscale("symlog", linthresh=smallest / 2, linscale=0.5)
+            axes.set_ylim(bottom=0, top=max(positive, default=1.0) * 5)
+        else:
+            axes.set_yscale("log")
     axes.set_xlabel(options.xlabel or options.x)
     axes.set_ylabel(options.ylabel or options.y)
     axes.set_title(options.title + "\n(circled: best trade-offs — nothing is both faster and more accurate)",
