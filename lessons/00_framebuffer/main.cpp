@@ -1,10 +1,9 @@
 // Lesson 00: the framebuffer. Make an image, set its pixels, write it as TGA
 // (raw and RLE), read both back, check them, and export a PNG.
 // Read docs/00_framebuffer.md beside this file.
-#include <CLI/CLI.hpp>
-
 #include <cstdio>
 
+#include "rasterlab/cli.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/tga.hpp"
@@ -13,10 +12,8 @@
 namespace {
 
 struct Options {
-    std::string output = "00_framebuffer.tga";
+    rl::ImageOptions image{"00_framebuffer.tga", 256, 256};
     std::string png;
-    int width = 256;
-    int height = 256;
     bool raw = false;
 };
 
@@ -30,9 +27,10 @@ std::size_t round_trip(const rl::Image& image, const rl::TgaWriteOptions& option
     return bytes.size();
 }
 
-int run(const Options& o) {
+int run(const Options& options) {
+    const auto& [output, width, height] = options.image;
     // [doc:lesson00-main]
-    const rl::Image card = lesson00::make_test_card(o.width, o.height);
+    const rl::Image card = lesson00::make_test_card(width, height);
 
     rl::TgaWriteOptions raw;
     raw.rle = false;
@@ -42,18 +40,18 @@ int run(const Options& o) {
     std::printf(
         "%dx%d test card: raw TGA %zu bytes, RLE TGA %zu bytes (%.1f%%); both read back "
         "identical\n",
-        o.width, o.height, raw_size, rle_size,
+        width, height, raw_size, rle_size,
         100.0 * static_cast<double>(rle_size) / static_cast<double>(raw_size));
 
-    rl::write_tga(o.output, card, o.raw ? raw : rle);
-    const rl::Image from_disk = rl::read_tga(o.output);  // and check what landed on disk
-    if (from_disk != card) throw std::runtime_error(o.output + " does not read back identical");
-    std::printf("wrote %s\n", o.output.c_str());
+    rl::write_tga(output, card, options.raw ? raw : rle);
+    const rl::Image from_disk = rl::read_tga(output);  // and check what landed on disk
+    if (from_disk != card) throw std::runtime_error(output + " does not read back identical");
+    std::printf("wrote %s\n", output.c_str());
     // [/doc:lesson00-main]
 
-    if (!o.png.empty()) {
-        rl::write_png(o.png, card);
-        std::printf("wrote %s\n", o.png.c_str());
+    if (!options.png.empty()) {
+        rl::write_png(options.png, card);
+        std::printf("wrote %s\n", options.png.c_str());
     }
     return 0;
 }
@@ -65,14 +63,8 @@ int main(int argc, char** argv) {
         "Lesson 00, the framebuffer: draws a test card pixel by pixel, writes it as TGA "
         "(raw and RLE), reads it back and checks it."};
     Options o;
-    app.add_option("-o,--output", o.output, "TGA file to write")->capture_default_str();
+    rl::add_image_options(app, o.image);
     app.add_option("--png", o.png, "Also export the image as PNG to this path");
-    app.add_option("--width", o.width, "Image width in pixels")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
-    app.add_option("--height", o.height, "Image height in pixels")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
     app.add_flag("--raw", o.raw, "Write the output uncompressed (type 2) instead of RLE (type 10)");
     CLI11_PARSE(app, argc, argv);
     return rl::guarded_main("00_framebuffer", [&] { return run(o); });

@@ -19,12 +19,6 @@ const char* name(LineMethod method) {
     return "?";
 }
 
-std::optional<LineMethod> parse_line_method(const std::string& text) {
-    for (LineMethod m : kLineMethods)
-        if (text == name(m)) return m;
-    return std::nullopt;
-}
-
 void blend_pixel(rl::Image& image, int x, int y, rl::Rgba colour, float coverage) {
     if (!image.contains(x, y)) return;
     const float c = std::clamp(coverage, 0.0f, 1.0f);

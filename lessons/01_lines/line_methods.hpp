@@ -23,7 +23,6 @@ inline constexpr std::array<LineMethod, 4> kLineMethods = {LineMethod::parametri
                                                            LineMethod::bresenham, LineMethod::wu};
 
 const char* name(LineMethod method);
-std::optional<LineMethod> parse_line_method(const std::string& text);
 
 // The pixel that contains a point.
 inline int pixel_of(float coordinate) {

@@ -1,8 +1,8 @@
 // Lesson 02: triangles. Fills a model's faces with flat Lambert shading,
 // orthographic, back faces culled. Read docs/02_triangles.md beside it.
-#include <CLI/CLI.hpp>
-
 #include <cstdio>
+
+#include "rasterlab/cli.hpp"
 
 #include "flat_shading.hpp"
 #include "overdraw.hpp"
@@ -12,22 +12,13 @@
 int main(int argc, char** argv) {
     CLI::App app{"Lesson 02, triangles: a model filled with flat Lambert shading (orthographic)."};
     std::string model = rl::project_model("torus").string();
-    std::string output = "02_triangles.tga";
-    std::string method_name = "edge";
-    int width = 800, height = 800;
+    rl::ImageOptions image_options{"02_triangles.tga"};
+    triangles::RasterMethod method = triangles::RasterMethod::edge;
     bool no_cull = false, test_image = false, overdraw = false;
     std::vector<float> light{0.3f, 0.5f, 1.0f};
-    app.add_option("-m,--model", model, "OBJ file to draw")->capture_default_str();
-    app.add_option("-o,--output", output, "Image to write (.tga or .png)")->capture_default_str();
-    app.add_option("--raster", method_name, "Rasterizer: scanline, bbox or edge")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"scanline", "bbox", "edge"}));
-    app.add_option("--width", width, "Image width")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
-    app.add_option("--height", height, "Image height")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
+    rl::add_model_option(app, model);
+    rl::add_image_options(app, image_options);
+    rl::add_method_option(app, "--raster", method, triangles::kRasterMethods, "Rasterizer");
     app.add_option("--light", light, "Direction towards the light, x y z")
         ->expected(3)
         ->capture_default_str();
@@ -38,18 +29,18 @@ int main(int argc, char** argv) {
         "Draw a fan of 12 triangles sharing a hub (48x48) coloured by how often each pixel "
         "is drawn: grey once, red twice or more");
     CLI11_PARSE(app, argc, argv);
+    const auto& [output, width, height] = image_options;
 
     return rl::guarded_main("02_triangles", [&] {
-        const triangles::RasterMethod method = *triangles::parse_raster_method(method_name);
         if (overdraw) {
             rl::save_image(output, triangles::overdraw_fan(method, 48, 12));
-            std::printf("overdraw fan drawn with %s into %s\n", method_name.c_str(),
+            std::printf("overdraw fan drawn with %s into %s\n", triangles::name(method),
                         output.c_str());
             return 0;
         }
         if (test_image) {
             rl::save_image(output, triangles::three_triangles(method));
-            std::printf("three triangles drawn with %s into %s\n", method_name.c_str(),
+            std::printf("three triangles drawn with %s into %s\n", triangles::name(method),
                         output.c_str());
             return 0;
         }
@@ -64,8 +55,8 @@ int main(int argc, char** argv) {
         const triangles::FlatStats stats = triangles::draw_flat_shaded(image, mesh, options);
         rl::save_image(output, image);
         std::printf("%s: %zu faces drawn, %zu culled, %zu refused, with %s into %s\n",
-                    model.c_str(), stats.drawn, stats.culled, stats.refused, method_name.c_str(),
-                    output.c_str());
+                    model.c_str(), stats.drawn, stats.culled, stats.refused,
+                    triangles::name(method), output.c_str());
         return 0;
     });
 }

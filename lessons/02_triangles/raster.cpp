@@ -14,10 +14,4 @@ const char* name(RasterMethod method) {
     return "?";
 }
 
-std::optional<RasterMethod> parse_raster_method(const std::string& text) {
-    for (RasterMethod m : kRasterMethods)
-        if (text == name(m)) return m;
-    return std::nullopt;
-}
-
 }  // namespace triangles

@@ -21,7 +21,6 @@ inline constexpr std::array<RasterMethod, 3> kRasterMethods = {
     RasterMethod::scanline, RasterMethod::bbox, RasterMethod::edge};
 
 const char* name(RasterMethod method);
-std::optional<RasterMethod> parse_raster_method(const std::string& text);
 
 // Fills the triangle with the chosen method. Returns false when the method
 // refused the triangle (a NaN or infinite vertex; for `edge`, a vertex
