@@ -1,0 +1,174 @@
+#include "hidden_surfaces.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "rasterlab/random.hpp"
+
+namespace zbuffer {
+
+const char* name(HsrMethod method) {
+    switch (method) {
+        case HsrMethod::painter:
+            return "painter";
+        case HsrMethod::bsp:
+            return "bsp";
+        case HsrMethod::zbuffer:
+            return "zbuffer";
+    }
+    return "?";
+}
+
+void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
+    for (const SceneTriangle& t : triangles)
+        triangles::rasterize_edge(
+            screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
+                frame.colour.at(x, y) = t.colour;
+                frame.ids.at(x, y) = t.id;
+                frame.depth.at(x, y) = b.x * t.v[0].z + b.y * t.v[1].z + b.z * t.v[2].z;
+            });
+}
+
+// [doc:painter]
+void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame) {
+    auto mean_depth = [](const SceneTriangle& t) { return t.v[0].z + t.v[1].z + t.v[2].z; };
+    std::stable_sort(triangles.begin(), triangles.end(),
+                     [&](const SceneTriangle& a, const SceneTriangle& b) {
+                         return mean_depth(a) > mean_depth(b);
+                     });
+    draw_in_order(triangles, frame);
+}
+// [/doc:painter]
+
+// [doc:zbuffer]
+void draw_zbuffer(const std::vector<SceneTriangle>& triangles, Frame& frame) {
+    for (const SceneTriangle& t : triangles)
+        triangles::rasterize_edge(
+            screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
+                // Window depth is affine in screen space: interpolate it linearly.
+                const float z = b.x * t.v[0].z + b.y * t.v[1].z + b.z * t.v[2].z;
+                float& nearest = frame.depth.at(x, y);
+                if (!(z < nearest)) return;  // depth test `less`
+                nearest = z;
+                frame.colour.at(x, y) = t.colour;
+                frame.ids.at(x, y) = t.id;
+            });
+}
+// [/doc:zbuffer]
+
+namespace {
+
+rl::dvec3 as_double(rl::vec3 v) {
+    return rl::cast<double>(v);
+}
+
+// |distance| below this counts as on the plane: float window coordinates of an
+// 800-pixel image are only good to about 5e-5 pixels.
+constexpr double kOnPlane = 1e-4;
+
+// Splits a convex polygon by the plane into the parts in front and behind.
+void split_polygon(const std::vector<rl::vec3>& polygon, const std::vector<double>& side,
+                   std::vector<rl::vec3>& front, std::vector<rl::vec3>& back) {
+    const std::size_t n = polygon.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        const std::size_t j = (i + 1) % n;
+        if (side[i] >= -kOnPlane) front.push_back(polygon[i]);
+        if (side[i] <= kOnPlane) back.push_back(polygon[i]);
+        if ((side[i] > kOnPlane && side[j] < -kOnPlane) ||
+            (side[i] < -kOnPlane && side[j] > kOnPlane)) {
+            const double t = side[i] / (side[i] - side[j]);  // where the edge meets the plane
+            const rl::vec3 p = polygon[i] + (polygon[j] - polygon[i]) * static_cast<float>(t);
+            front.push_back(p);
+            back.push_back(p);
+        }
+    }
+}
+
+void add_fan(const std::vector<rl::vec3>& polygon, const SceneTriangle& source,
+             std::vector<SceneTriangle>& out) {
+    for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
+        SceneTriangle piece = source;
+        piece.v[0] = polygon[0], piece.v[1] = polygon[k], piece.v[2] = polygon[k + 1];
+        out.push_back(piece);
+    }
+}
+
+std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTree& tree,
+                                    int depth) {
+    if (triangles.empty()) return nullptr;
+    tree.depth = std::max(tree.depth, depth);
+    ++tree.nodes;
+    auto node = std::make_unique<BspNode>();
+    const SceneTriangle& splitter = triangles.front();
+    const rl::dvec3 a = as_double(splitter.v[0]);
+    node->normal =
+        rl::normalize(rl::cross(as_double(splitter.v[1]) - a, as_double(splitter.v[2]) - a));
+    node->offset = -rl::dot(node->normal, a);
+    std::vector<SceneTriangle> front, back;
+    for (const SceneTriangle& t : triangles) {
+        std::vector<double> side(3);
+        bool any_front = false, any_back = false;
+        for (int k = 0; k < 3; ++k) {
+            side[static_cast<std::size_t>(k)] =
+                rl::dot(node->normal, as_double(t.v[k])) + node->offset;
+            any_front |= side[static_cast<std::size_t>(k)] > kOnPlane;
+            any_back |= side[static_cast<std::size_t>(k)] < -kOnPlane;
+        }
+        if (!any_front && !any_back) {
+            node->coplanar.push_back(t);
+            ++tree.triangles;
+        } else if (!any_back) {
+            front.push_back(t);
+        } else if (!any_front) {
+            back.push_back(t);
+        } else {  // straddles the plane: cut it
+            std::vector<rl::vec3> in_front, behind;
+            split_polygon({t.v[0], t.v[1], t.v[2]}, side, in_front, behind);
+            add_fan(in_front, t, front);
+            add_fan(behind, t, back);
+        }
+    }
+    node->front = build_node(std::move(front), tree, depth + 1);
+    node->back = build_node(std::move(back), tree, depth + 1);
+    return node;
+}
+
+void draw_node(const BspNode* node, Frame& frame) {
+    if (!node) return;
+    // The viewer is at depth -infinity: on the front side when the normal points towards it.
+    const bool viewer_in_front = node->normal.z < 0;
+    draw_node(viewer_in_front ? node->back.get() : node->front.get(), frame);
+    draw_in_order(node->coplanar, frame);
+    draw_node(viewer_in_front ? node->front.get() : node->back.get(), frame);
+}
+
+}  // namespace
+
+BspTree build_bsp(std::vector<SceneTriangle> triangles) {
+    rl::SplitMix64 random(7);
+    for (std::size_t i = triangles.size(); i > 1; --i)  // Fisher-Yates, reproducible
+        std::swap(triangles[i - 1], triangles[static_cast<std::size_t>(random.next() % i)]);
+    BspTree tree;
+    tree.root = build_node(std::move(triangles), tree, 1);
+    return tree;
+}
+
+void draw_bsp(const BspTree& tree, Frame& frame) {
+    draw_node(tree.root.get(), frame);
+}
+
+void render(HsrMethod method, const std::vector<SceneTriangle>& scene, Frame& frame) {
+    switch (method) {
+        case HsrMethod::painter:
+            draw_painter(scene, frame);
+            break;
+        case HsrMethod::bsp:
+            draw_bsp(build_bsp(scene), frame);
+            break;
+        case HsrMethod::zbuffer:
+            draw_zbuffer(scene, frame);
+            break;
+    }
+}
+
+}  // namespace zbuffer

@@ -1,0 +1,65 @@
+// Three ways to show only the nearest surface: the painter's algorithm, a
+// BSP tree, and the z-buffer. Each draws a scene into a colour image and an
+// ID buffer (which face won each pixel, -1 for none), so the lab can compare
+// them pixel by pixel. Derivations: docs/03_zbuffer.md.
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include "scene.hpp"
+
+namespace zbuffer {
+
+enum class HsrMethod { painter, bsp, zbuffer };
+inline constexpr std::array<HsrMethod, 3> kHsrMethods = {HsrMethod::painter, HsrMethod::bsp,
+                                                         HsrMethod::zbuffer};
+const char* name(HsrMethod method);
+
+struct Frame {
+    rl::Image colour;
+    rl::Grid<int> ids;
+    rl::FloatImage depth;  // window depth, 1 (the far plane) where nothing was drawn
+    Frame(int width, int height, rl::Rgba background = {16, 18, 24, 255})
+        : colour(width, height, background), ids(width, height, -1), depth(width, height, 1.0f) {}
+};
+
+// Draws every triangle in the given order with no depth test: the last one wins.
+void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame);
+
+// The painter's algorithm: sort by mean depth, farthest first, then draw in order.
+void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame);
+
+// The z-buffer: keep, per pixel, the depth of the nearest surface drawn so
+// far and draw a fragment only if it is nearer (depth test `less`).
+void draw_zbuffer(const std::vector<SceneTriangle>& triangles, Frame& frame);
+
+// A binary space partitioning tree: each node holds a plane (from one of its
+// triangles), the triangles lying in it, and the subtrees in front of and
+// behind it; triangles crossing a plane are split in two or three.
+struct BspNode {
+    rl::dvec3 normal;
+    double offset;  // the plane is dot(normal, p) + offset = 0
+    std::vector<SceneTriangle> coplanar;
+    std::unique_ptr<BspNode> front, back;
+};
+
+struct BspTree {
+    std::unique_ptr<BspNode> root;
+    std::size_t triangles = 0;  // after splitting
+    std::size_t nodes = 0;
+    int depth = 0;
+};
+
+// Builds the tree; the splitting plane of each node is the first remaining
+// triangle's, after a fixed shuffle (keeps the tree shallow on meshes).
+BspTree build_bsp(std::vector<SceneTriangle> triangles);
+
+// Draws back to front for a viewer looking along +depth: at each node, the
+// side away from the viewer first, then the node, then the near side.
+void draw_bsp(const BspTree& tree, Frame& frame);
+
+// Renders the scene with one method (building the BSP tree if needed).
+void render(HsrMethod method, const std::vector<SceneTriangle>& scene, Frame& frame);
+
+}  // namespace zbuffer

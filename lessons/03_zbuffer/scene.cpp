@@ -1,0 +1,60 @@
+#include "scene.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "flat_shading.hpp"
+
+namespace zbuffer {
+
+rl::mat3 rotation_x(float degrees) {
+    const float a = degrees * std::numbers::pi_v<float> / 180.0f, c = std::cos(a), s = std::sin(a);
+    return {{rl::vec3{1, 0, 0}, rl::vec3{0, c, -s}, rl::vec3{0, s, c}}};
+}
+
+rl::mat3 rotation_y(float degrees) {
+    const float a = degrees * std::numbers::pi_v<float> / 180.0f, c = std::cos(a), s = std::sin(a);
+    return {{rl::vec3{c, 0, s}, rl::vec3{0, 1, 0}, rl::vec3{-s, 0, c}}};
+}
+
+rl::vec3 to_window(rl::vec3 p, int width, int height) {
+    return {(p.x + 1.0f) * 0.5f * static_cast<float>(width),
+            (p.y + 1.0f) * 0.5f * static_cast<float>(height), (1.0f - p.z) * 0.5f};
+}
+
+std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements, int width,
+                                       int height, std::vector<std::string>* warnings) {
+    std::vector<SceneTriangle> scene;
+    const rl::vec3 light{0.3f, 0.5f, 1.0f};
+    const rl::Rgba base{235, 225, 205, 255};
+    for (const Placement& placement : placements) {
+        const rl::Mesh mesh = rl::load_obj(placement.model, warnings);
+        for (const rl::Triangle& face : mesh.triangles) {
+            rl::vec3 world[3];
+            SceneTriangle t;
+            for (int k = 0; k < 3; ++k) {
+                world[k] = placement.rotation * mesh.position(face, k) * placement.scale +
+                           placement.offset;
+                t.v[k] = to_window(world[k], width, height);
+            }
+            if (triangles::signed_area2(screen(t)) <= 0) continue;  // back face
+            const float light_amount =
+                triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light);
+            auto scale = [&](std::uint8_t c) {
+                return static_cast<std::uint8_t>(std::lround(c * light_amount));
+            };
+            t.colour = {scale(base.r), scale(base.g), scale(base.b), 255};
+            t.id = static_cast<int>(scene.size());
+            scene.push_back(t);
+        }
+    }
+    return scene;
+}
+
+std::vector<Placement> default_placements() {
+    return {
+        {rl::project_model("rock"), rl::mat3::identity(), 0.75f, {0, 0, 0}},
+        {rl::project_model("torus"), rotation_y(25) * rotation_x(-65), 0.95f, {0.05f, -0.05f, 0}}};
+}
+
+}  // namespace zbuffer

@@ -1,0 +1,49 @@
+// The scene of lesson 03: triangles already in window coordinates (x, y in
+// pixels, z = window depth in [0, 1], 0 nearest), each with the colour flat
+// shading gives it and the index that identifies it in an ID buffer.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "raster.hpp"
+#include "rasterlab/image.hpp"
+#include "rasterlab/mat.hpp"
+#include "rasterlab/mesh.hpp"
+
+namespace zbuffer {
+
+struct SceneTriangle {
+    rl::vec3 v[3];  // window x, y; depth z
+    rl::Rgba colour;
+    int id;  // the face it came from (pieces of a split face share it)
+};
+
+// A model placed in the scene: rotated, scaled, then moved.
+struct Placement {
+    std::filesystem::path model;
+    rl::mat3 rotation = rl::mat3::identity();
+    float scale = 1.0f;
+    rl::vec3 offset{};
+};
+
+rl::mat3 rotation_x(float degrees);
+rl::mat3 rotation_y(float degrees);
+
+// Orthographic, as in lessons 01 and 02: x, y in [-1, 1] fill the image, and
+// the viewer looks down -z, so window depth is (1 - z) / 2: z = 1 is nearest.
+rl::vec3 to_window(rl::vec3 model, int width, int height);
+
+// Loads and places the models, culls back faces, shades each face flat
+// (lesson 02's Lambert) and numbers the faces in order.
+std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements, int width,
+                                       int height, std::vector<std::string>* warnings = nullptr);
+
+// The lesson's default: the rock with a tilted torus passing through it.
+std::vector<Placement> default_placements();
+
+inline triangles::Triangle2 screen(const SceneTriangle& t) {
+    return {{t.v[0].xy(), t.v[1].xy(), t.v[2].xy()}};
+}
+
+}  // namespace zbuffer
