@@ -55,12 +55,61 @@ def row_key(row, label):
     return tuple(row[c] for c in label)
 
 
+def finish(figure, axes, options, rows):
+    if options.logx:
+        axes.set_xscale("log")
+    if options.logy:
+        ys = [number(r[options.y]) for r in rows]
+        positive = [y for y in ys if y and y > 0]
+        if any(y == 0 for y in ys):
+            # Zero is a result here (an exact method): a linear stretch near 0, log above.
+            smallest = min(positive) if positive else 1.0
+            axes.set_yscale("symlog", linthresh=smallest / 2, linscale=0.5)
+            axes.set_ylim(bottom=0, top=max(positive, default=1.0) * 5)
+        else:
+            axes.set_yscale("log")
+    axes.set_xlabel(options.xlabel or options.x)
+    axes.set_ylabel(options.ylabel or options.y)
+    axes.grid(True, which="both", alpha=0.3)
+    figure.tight_layout()
+    options.svg.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(options.svg, metadata={"Date": None})
+    print(f"wrote {options.svg}")
+
+
+def draw_lines(plt, rows, options):
+    """One line per series value (colour), and per style value (dash pattern)."""
+    figure, axes = plt.subplots(figsize=(7.5, 5))
+    series = list(dict.fromkeys(r[options.series] for r in rows))
+    styles = list(dict.fromkeys(r[options.style] for r in rows)) if options.style else [None]
+    dashes = ["-", "--", ":", "-."]
+    for i, name in enumerate(series):
+        for j, style in enumerate(styles):
+            members = [r for r in rows if r[options.series] == name and (style is None or r[options.style] == style)]
+            points = sorted((number(r[options.x]), number(r[options.y])) for r in members)
+            label = name if style is None else f"{name}, {style}"
+            axes.plot([p[0] for p in points], [p[1] for p in points], dashes[j % len(dashes)], color=f"C{i}",
+                      marker="o", markersize=3, label=label)
+    axes.set_title(options.title, fontsize=10)
+    axes.legend(fontsize=7, ncol=2)
+    finish(figure, axes, options, rows)
+    if options.table:
+        columns = options.columns.split(",") if options.columns else list(rows[0].keys())
+        lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+        for row in rows:
+            lines.append("| " + " | ".join(format_cell(row[c]) for c in columns) + " |")
+        options.table.write_text("\n".join(lines) + "\n")
+        print(f"wrote {options.table}")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("csv", type=pathlib.Path)
     parser.add_argument("--x", required=True, help="time column")
     parser.add_argument("--y", required=True, help="error column")
-    parser.add_argument("--label", required=True, help="column(s) naming a point, comma-separated")
+    parser.add_argument("--label", help="column(s) naming a point, comma-separated (scatter)")
+    parser.add_argument("--series", help="draw lines instead: one line per value of this column")
+    parser.add_argument("--style", help="with --series: line style per value of this column")
     parser.add_argument("--group", help="column whose values get their own colour and front")
     parser.add_argument("--xlabel", default=None)
     parser.add_argument("--ylabel", default=None)
@@ -82,6 +131,11 @@ def main():
         rows = list(csv.DictReader(f))
     if not rows:
         sys.exit(f"{options.csv}: no rows")
+    if options.series:
+        draw_lines(plt, rows, options)
+        return
+    if not options.label:
+        sys.exit("--label or --series is required")
     label = options.label.split(",")
     for column in [options.x, options.y, *label] + ([options.group] if options.group else []):
         if column not in rows[0]:
@@ -107,29 +161,11 @@ def main():
                   color=colour, linewidth=1, zorder=2)
         axes.scatter([points[i][0] for i in front], [points[i][1] for i in front], s=140,
                      facecolors="none", edgecolors=colour, linewidths=1.5, zorder=4)
-    if options.logx:
-        axes.set_xscale("log")
-    if options.logy:
-        ys = [number(r[options.y]) for r in rows]
-        positive = [y for y in ys if y and y > 0]
-        if any(y == 0 for y in ys):
-            # Zero is a result here (an exact method): a linear stretch near 0, log above.
-            smallest = min(positive) if positive else 1.0
-            axes.set_yscale("symlog", linthresh=smallest / 2, linscale=0.5)
-            axes.set_ylim(bottom=0, top=max(positive, default=1.0) * 5)
-        else:
-            axes.set_yscale("log")
-    axes.set_xlabel(options.xlabel or options.x)
-    axes.set_ylabel(options.ylabel or options.y)
     axes.set_title(options.title + "\n(circled: best trade-offs — nothing is both faster and more accurate)",
                    fontsize=10)
-    axes.grid(True, which="both", alpha=0.3)
     if options.group:
         axes.legend(fontsize=8)
-    figure.tight_layout()
-    options.svg.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(options.svg, metadata={"Date": None})
-    print(f"wrote {options.svg}")
+    finish(figure, axes, options, rows)
 
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())

@@ -7,19 +7,19 @@ namespace zbuffer {
 const char* name(DepthFormat format) {
     switch (format) {
         case DepthFormat::float_z:
-            return "float z";
+            return "float-z";
         case DepthFormat::fixed24:
-            return "24-bit fixed";
+            return "fixed24";
         case DepthFormat::fixed16:
-            return "16-bit fixed";
+            return "fixed16";
         case DepthFormat::reverse_z:
-            return "reverse-Z float";
+            return "reverse-z";
         case DepthFormat::inverse_w:
-            return "1/w float";
+            return "inverse-w";
         case DepthFormat::linear_z:
-            return "linear w float";
+            return "linear-w";
         case DepthFormat::logarithmic:
-            return "logarithmic float";
+            return "log";
     }
     return "?";
 }

@@ -1,6 +1,7 @@
 // Lesson 03: the z-buffer. Draws a scene of overlapping models with flat
 // shading and hidden surfaces removed by the method of your choice, and a
 // picture of the depth buffer. Read docs/03_zbuffer.md beside this file.
+#include <algorithm>
 #include <cstdio>
 
 #include "depth_picture.hpp"
@@ -8,6 +9,7 @@
 #include "rasterlab/cli.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
+#include "zfight.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{
@@ -22,10 +24,36 @@ int main(int argc, char** argv) {
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--hsr", method, zbuffer::kHsrMethods, "Hidden-surface method");
     app.add_option("--depth-out", depth_output, "Also write the depth buffer as a picture here");
+    auto* zfight = app.add_subcommand(
+        "zfight",
+        "Instead: the depth-precision experiment (two planes 0.01 apart, perspective) as a "
+        "picture, red where the far plane wrongly wins");
+    zbuffer::DepthFormat format = zbuffer::DepthFormat::float_z;
+    zbuffer::TwoPlanes planes;
+    zbuffer::DepthRange range{0.1f, 1000.0f};
+    bool fitted = false;
+    rl::add_method_option(*zfight, "--format", format, zbuffer::kDepthFormats, "Depth format");
+    zfight->add_option("--distance", planes.distance, "Distance to the planes")
+        ->capture_default_str();
+    zfight->add_option("--near", range.near_plane, "Near plane")->capture_default_str();
+    zfight->add_option("--far", range.far_plane, "Far plane")->capture_default_str();
+    zfight->add_flag("--fitted", fitted, "Fit near and far to the planes instead");
     CLI11_PARSE(app, argc, argv);
     const auto& [output, width, height] = image_options;
 
     return rl::guarded_main("03_zbuffer", [&] {
+        if (zfight->parsed()) {
+            planes.size = std::min(width, height);
+            if (fitted) range = zbuffer::fitted_range(planes);
+            if (!(range.near_plane > 0 && range.near_plane < range.far_plane))
+                throw std::invalid_argument("need 0 < near < far");
+            rl::save_image(output, zbuffer::zfight_map(format, range, planes));
+            std::printf(
+                "z-fighting with %s, near %g, far %g, distance %g: %.2f%% of pixels, in %s\n",
+                zbuffer::name(format), range.near_plane, range.far_plane, planes.distance,
+                100.0 * zbuffer::zfight_share(format, range, planes), output.c_str());
+            return 0;
+        }
         std::vector<zbuffer::Placement> placements = zbuffer::default_placements();
         if (!model.empty()) placements = {{model}};
         std::vector<std::string> warnings;

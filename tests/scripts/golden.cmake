@@ -12,7 +12,7 @@ get_filename_component(output_dir "${OUTPUT}" DIRECTORY)
 file(MAKE_DIRECTORY "${output_dir}")
 file(REMOVE "${OUTPUT}")
 
-execute_process(COMMAND "${PROGRAM}" ${args} -o "${OUTPUT}" RESULT_VARIABLE program_result)
+execute_process(COMMAND "${PROGRAM}" -o "${OUTPUT}" ${args} RESULT_VARIABLE program_result)
 if(NOT program_result EQUAL 0)
   message(FATAL_ERROR "${PROGRAM} failed (${program_result})")
 endif()
