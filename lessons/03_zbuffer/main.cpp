@@ -6,6 +6,7 @@
 
 #include "depth_picture.hpp"
 #include "hidden_surfaces.hpp"
+#include "hsr_scenes.hpp"
 #include "rasterlab/cli.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
@@ -24,6 +25,13 @@ int main(int argc, char** argv) {
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--hsr", method, zbuffer::kHsrMethods, "Hidden-surface method");
     app.add_option("--depth-out", depth_output, "Also write the depth buffer as a picture here");
+    std::string scene_name = "models";
+    app.add_option(
+           "--scene", scene_name,
+           "models (the rock pierced by the torus), sticks (three sticks in a cycle) or soup "
+           "(60 triangles piercing each other)")
+        ->check(CLI::IsMember({"models", "sticks", "soup"}))
+        ->capture_default_str();
     auto* zfight = app.add_subcommand(
         "zfight",
         "Instead: the depth-precision experiment (two planes 0.01 apart, perspective) as a "
@@ -57,7 +65,14 @@ int main(int argc, char** argv) {
         std::vector<zbuffer::Placement> placements = zbuffer::default_placements();
         if (!model.empty()) placements = {{model}};
         std::vector<std::string> warnings;
-        const auto scene = zbuffer::build_scene(placements, width, height, &warnings);
+        std::vector<zbuffer::SceneTriangle> scene;
+        const int size = std::min(width, height);
+        if (scene_name == "sticks")
+            scene = zbuffer::cyclic_sticks(size);
+        else if (scene_name == "soup")
+            scene = zbuffer::random_soup(60, size, 9);
+        else
+            scene = zbuffer::build_scene(placements, width, height, &warnings);
         rl::print_warnings("03_zbuffer", warnings);
         // [doc:lesson03-main]
         zbuffer::Frame frame(width, height);
@@ -66,7 +81,7 @@ int main(int argc, char** argv) {
         if (!depth_output.empty())
             rl::save_image(depth_output, zbuffer::depth_picture(frame.depth));
         // [/doc:lesson03-main]
-        std::printf("%zu front faces drawn with %s into %s\n", scene.size(), zbuffer::name(method),
+        std::printf("%zu triangles drawn with %s into %s\n", scene.size(), zbuffer::name(method),
                     output.c_str());
         return 0;
     });
