@@ -66,6 +66,7 @@ rl::dvec3 as_double(rl::vec3 v) {
 // 800-pixel image are only good to about 5e-5 pixels.
 constexpr double kOnPlane = 1e-4;
 
+// [doc:bsp-split]
 // Splits a convex polygon by the plane into the parts in front and behind.
 void split_polygon(const std::vector<rl::vec3>& polygon, const std::vector<double>& side,
                    std::vector<rl::vec3>& front, std::vector<rl::vec3>& back) {
@@ -83,6 +84,8 @@ void split_polygon(const std::vector<rl::vec3>& polygon, const std::vector<doubl
         }
     }
 }
+
+// [/doc:bsp-split]
 
 void add_fan(const std::vector<rl::vec3>& polygon, const SceneTriangle& source,
              std::vector<SceneTriangle>& out) {
@@ -133,6 +136,7 @@ std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTre
     return node;
 }
 
+// [doc:bsp-draw]
 void draw_node(const BspNode* node, Frame& frame) {
     if (!node) return;
     // The viewer is at depth -infinity: on the front side when the normal points towards it.
@@ -141,6 +145,8 @@ void draw_node(const BspNode* node, Frame& frame) {
     draw_in_order(node->coplanar, frame);
     draw_node(viewer_in_front ? node->front.get() : node->back.get(), frame);
 }
+
+// [/doc:bsp-draw]
 
 }  // namespace
 
