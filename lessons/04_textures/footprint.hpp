@@ -1,0 +1,37 @@
+// The lab's ground truth for texture filtering: the texture averaged over
+// each pixel's exact footprint, for scenes whose texture mapping is affine.
+#pragma once
+
+#include <cstdint>
+
+#include "sampling.hpp"
+
+namespace textures {
+
+// An affine texture mapping of a size x size image: uv at window point p is
+// origin + p.x * du + p.y * dv (du, dv: the change per pixel).
+struct AffineScene {
+    rl::vec2 origin, du, dv;
+    int size;
+    rl::vec2 uv_at(double x, double y) const {
+        return {static_cast<float>(origin.x + x * du.x + y * dv.x),
+                static_cast<float>(origin.y + x * du.y + y * dv.y)};
+    }
+    UvDerivatives derivatives() const { return {du, dv}; }
+};
+
+// Magnification: the texture about 8x enlarged and turned by 20 degrees.
+AffineScene magnification_scene(const rl::Image& texture, int size);
+// Minification: the texture repeated and sheared, 20 to 40 texels per pixel.
+AffineScene minification_scene(const rl::Image& texture, int size);
+
+// Per pixel, the mean of the texture (texels as constant squares, repeat
+// wrap) over the parallelogram the pixel maps to, from n x n samples in
+// double precision.
+rl::Image footprint_average(const rl::Image& texture, const AffineScene& scene, int n);
+
+// The scene rendered with a sampler: one sample at each pixel centre.
+rl::Image render_scene(const MipChain& texture, const AffineScene& scene,
+                       const SamplerState& state);
+
+}  // namespace textures

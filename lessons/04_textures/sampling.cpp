@@ -1,0 +1,174 @@
+#include "sampling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace textures {
+
+const char* name(Filter filter) {
+    switch (filter) {
+        case Filter::nearest:
+            return "nearest";
+        case Filter::bilinear:
+            return "bilinear";
+        case Filter::trilinear:
+            return "trilinear";
+    }
+    return "?";
+}
+
+const char* name(Wrap wrap) {
+    switch (wrap) {
+        case Wrap::repeat:
+            return "repeat";
+        case Wrap::mirror:
+            return "mirror";
+        case Wrap::clamp:
+            return "clamp";
+        case Wrap::border:
+            return "border";
+    }
+    return "?";
+}
+
+rl::vec4 to_vec4(rl::Rgba c) {
+    return rl::vec4{float(c.r), float(c.g), float(c.b), float(c.a)} / 255.0f;
+}
+
+rl::Rgba to_rgba(rl::vec4 c) {
+    auto byte = [](float x) {
+        return static_cast<std::uint8_t>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f));
+    };
+    return {byte(c.x), byte(c.y), byte(c.z), byte(c.w)};
+}
+
+// [doc:downsample]
+rl::Image downsample(const rl::Image& image) {
+    const int w = std::max(1, image.width() / 2), h = std::max(1, image.height() / 2);
+    const double sx = double(image.width()) / w,
+                 sy = double(image.height()) / h;  // 2, or a bit more if odd
+    rl::Image out(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            // The output texel covers [x*sx, (x+1)*sx) x [y*sy, (y+1)*sy) of the input.
+            double sum[4] = {0, 0, 0, 0}, total = 0;
+            for (int j = static_cast<int>(y * sy);
+                 j < std::min(image.height(), static_cast<int>(std::ceil((y + 1) * sy))); ++j)
+                for (int i = static_cast<int>(x * sx);
+                     i < std::min(image.width(), static_cast<int>(std::ceil((x + 1) * sx))); ++i) {
+                    const double wx =
+                        std::min<double>(i + 1, (x + 1) * sx) - std::max<double>(i, x * sx);
+                    const double wy =
+                        std::min<double>(j + 1, (y + 1) * sy) - std::max<double>(j, y * sy);
+                    const double weight = wx * wy;
+                    const rl::Rgba c = image.get(i, j);
+                    sum[0] += weight * c.r, sum[1] += weight * c.g, sum[2] += weight * c.b,
+                        sum[3] += weight * c.a;
+                    total += weight;
+                }
+            auto byte = [&](double s) { return static_cast<std::uint8_t>(std::lround(s / total)); };
+            out.set(x, y, {byte(sum[0]), byte(sum[1]), byte(sum[2]), byte(sum[3])});
+        }
+    return out;
+}
+// [/doc:downsample]
+
+MipChain::MipChain(const rl::Image& image) {
+    levels_.push_back(image);
+    while (levels_.back().width() > 1 || levels_.back().height() > 1)
+        levels_.push_back(downsample(levels_.back()));
+}
+
+// [doc:wrap]
+int wrap_texel(int i, int size, Wrap wrap) {
+    switch (wrap) {
+        case Wrap::repeat:
+            return ((i % size) + size) % size;
+        case Wrap::mirror: {
+            const int period = ((i % (2 * size)) + 2 * size) % (2 * size);  // 0 .. 2*size-1
+            return period < size ? period : 2 * size - 1 - period;
+        }
+        case Wrap::clamp:
+            return std::clamp(i, 0, size - 1);
+        case Wrap::border:
+            return i < 0 || i >= size ? -1 : i;
+    }
+    return 0;
+}
+// [/doc:wrap]
+
+namespace {
+
+rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) {
+    const int x = wrap_texel(i, level.width(), state.wrap),
+              y = wrap_texel(j, level.height(), state.wrap);
+    if (x < 0 || y < 0) return state.border;
+    return to_vec4(level.get(x, y));
+}
+
+// Texel coordinates are computed in double after reducing u to one period:
+// with `repeat`, u = 10000.3 and u = 0.3 must give the same texel, and the
+// float u itself already holds only 0.001 of precision at 10^4.
+double to_texels(float u, int size, Wrap wrap) {
+    double t = static_cast<double>(u);
+    if (wrap == Wrap::repeat) t -= std::floor(t);
+    if (wrap == Wrap::mirror) t -= 2.0 * std::floor(t / 2.0);
+    return t * size;
+}
+
+}  // namespace
+
+// [doc:sample-level]
+rl::vec4 sample_level(const rl::Image& level, rl::vec2 uv, bool bilinear,
+                      const SamplerState& state) {
+    const double s = to_texels(uv.x, level.width(), state.wrap),
+                 t = to_texels(uv.y, level.height(), state.wrap);
+    if (!bilinear)
+        return texel(level, static_cast<int>(std::floor(s)), static_cast<int>(std::floor(t)),
+                     state);
+    // The four texel centres around (s, t): centres sit at half-integers.
+    const double x = s - 0.5, y = t - 0.5;
+    const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
+    const float fx = static_cast<float>(x - i), fy = static_cast<float>(y - j);
+    const rl::vec4 bottom =
+        texel(level, i, j, state) * (1 - fx) + texel(level, i + 1, j, state) * fx;
+    const rl::vec4 top =
+        texel(level, i, j + 1, state) * (1 - fx) + texel(level, i + 1, j + 1, state) * fx;
+    return bottom * (1 - fy) + top * fy;
+}
+// [/doc:sample-level]
+
+// [doc:lod]
+float level_of_detail(const UvDerivatives& d, int width, int height) {
+    const rl::vec2 size{float(width), float(height)};
+    const float along_x = rl::length(d.dx * size), along_y = rl::length(d.dy * size);  // in texels
+    return std::log2(std::max({along_x, along_y, 1e-20f}));
+}
+// [/doc:lod]
+
+rl::vec4 sample(const MipChain& texture, rl::vec2 uv, const UvDerivatives& derivatives,
+                const SamplerState& state) {
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return state.border;
+    switch (state.filter) {
+        case Filter::nearest:
+            return sample_level(texture.level(0), uv, false, state);
+        case Filter::bilinear:
+            return sample_level(texture.level(0), uv, true, state);
+        case Filter::trilinear:
+            break;
+    }
+    // [doc:trilinear]
+    const rl::Image& base = texture.level(0);
+    float lod = level_of_detail(derivatives, base.width(), base.height());
+    if (!std::isfinite(lod)) lod = 0;
+    lod = std::clamp(lod, 0.0f, static_cast<float>(texture.levels() - 1));
+    const int lower = static_cast<int>(std::floor(lod));
+    const int upper = std::min(lower + 1, texture.levels() - 1);
+    const float blend = lod - static_cast<float>(lower);
+    const rl::vec4 a = sample_level(texture.level(lower), uv, true, state);
+    if (blend == 0 || upper == lower) return a;
+    return a * (1 - blend) + sample_level(texture.level(upper), uv, true, state) * blend;
+    // [/doc:trilinear]
+}
+
+}  // namespace textures

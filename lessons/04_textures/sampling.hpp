@@ -1,0 +1,75 @@
+// Texture sampling: wrap modes, filters and mipmaps. Texture coordinates are
+// as in OBJ files: (0, 0) is the bottom-left corner of the image, (1, 1) the
+// top-right; texel (i, j) covers [i, i+1) x [j, j+1) in texel units and has
+// its centre at (i + 0.5, j + 0.5), like a pixel. Derivations:
+// docs/04_textures.md.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "rasterlab/image.hpp"
+#include "rasterlab/vec.hpp"
+
+namespace textures {
+
+enum class Filter { nearest, bilinear, trilinear };
+inline constexpr std::array<Filter, 3> kFilters = {Filter::nearest, Filter::bilinear,
+                                                   Filter::trilinear};
+const char* name(Filter filter);
+
+enum class Wrap { repeat, mirror, clamp, border };
+inline constexpr std::array<Wrap, 4> kWraps = {Wrap::repeat, Wrap::mirror, Wrap::clamp,
+                                               Wrap::border};
+const char* name(Wrap wrap);
+
+// A texture and its mipmap chain: level 0 is the image; each next level
+// halves the size (rounding down, never below 1) and is the exact area
+// average of the level before, so odd sizes lose nothing.
+class MipChain {
+  public:
+    explicit MipChain(const rl::Image& image);
+    int levels() const { return static_cast<int>(levels_.size()); }
+    const rl::Image& level(int i) const { return levels_[static_cast<std::size_t>(i)]; }
+
+  private:
+    std::vector<rl::Image> levels_;
+};
+
+// One level down: each output texel averages the input texels under it,
+// weighted by how much of each it covers.
+rl::Image downsample(const rl::Image& image);
+
+struct SamplerState {
+    Filter filter = Filter::bilinear;
+    Wrap wrap = Wrap::repeat;
+    rl::vec4 border{0, 0, 0, 1};
+};
+
+// How the texture coordinates change from one pixel to the next, in UV units:
+// d(u, v)/dx and d(u, v)/dy. They choose the mip level.
+struct UvDerivatives {
+    rl::vec2 dx{}, dy{};
+};
+
+// The mip level for a footprint: log2 of the longer side of the pixel's
+// image in texels of level 0 (0 or less: magnification).
+float level_of_detail(const UvDerivatives& d, int width, int height);
+
+// An integer texel coordinate wrapped into [0, size) (or -1 for `border`
+// outside). Exposed for the tests.
+int wrap_texel(int i, int size, Wrap wrap);
+
+// The filtered colour at uv (components 0..1). NaN or infinite coordinates
+// give the border colour: a defined result, never a crash.
+rl::vec4 sample(const MipChain& texture, rl::vec2 uv, const UvDerivatives& derivatives,
+                const SamplerState& state);
+
+// Sampling one level: nearest or bilinear.
+rl::vec4 sample_level(const rl::Image& level, rl::vec2 uv, bool bilinear,
+                      const SamplerState& state);
+
+rl::vec4 to_vec4(rl::Rgba c);
+rl::Rgba to_rgba(rl::vec4 c);
+
+}  // namespace textures

@@ -1,0 +1,143 @@
+// Lesson 04's stability cases: coordinates far outside [0, 1], negative and
+// NaN coordinates, tiny and odd-sized textures, and the mip chain.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "footprint.hpp"
+#include "rasterlab/image_metrics.hpp"
+
+namespace {
+
+using namespace textures;
+
+// A texture whose texel (i, j) has red = i and green = j, so a sample tells
+// which texel it came from.
+rl::Image coordinates_texture(int w, int h) {
+    rl::Image image(w, h);
+    for (int j = 0; j < h; ++j)
+        for (int i = 0; i < w; ++i)
+            image.set(i, j, {static_cast<std::uint8_t>(i), static_cast<std::uint8_t>(j), 0, 255});
+    return image;
+}
+
+std::pair<int, int> texel_hit(const MipChain& chain, rl::vec2 uv, Wrap wrap) {
+    SamplerState state;
+    state.filter = Filter::nearest;
+    state.wrap = wrap;
+    const rl::Rgba c = to_rgba(sample(chain, uv, {}, state));
+    return {c.r, c.g};
+}
+
+TEST(Wrap, EveryModeMapsTexelIndicesAsDefined) {
+    EXPECT_EQ(wrap_texel(-1, 4, Wrap::repeat), 3);
+    EXPECT_EQ(wrap_texel(9, 4, Wrap::repeat), 1);
+    EXPECT_EQ(wrap_texel(-1, 4, Wrap::mirror), 0);
+    EXPECT_EQ(wrap_texel(4, 4, Wrap::mirror), 3);
+    EXPECT_EQ(wrap_texel(8, 4, Wrap::mirror), 0);
+    EXPECT_EQ(wrap_texel(-5, 4, Wrap::clamp), 0);
+    EXPECT_EQ(wrap_texel(7, 4, Wrap::clamp), 3);
+    EXPECT_EQ(wrap_texel(-1, 4, Wrap::border), -1);
+    EXPECT_EQ(wrap_texel(3, 4, Wrap::border), 3);
+}
+
+TEST(Sampling, NegativeCoordinatesRepeatAndMirror) {
+    const MipChain chain(coordinates_texture(8, 8));
+    EXPECT_EQ(texel_hit(chain, {-0.2f, 0.3f}, Wrap::repeat),
+              (std::pair{6, 2}));  // -0.2 = 0.8 (mod 1)
+    EXPECT_EQ(texel_hit(chain, {-0.2f, 0.3f}, Wrap::mirror), (std::pair{1, 2}));  // mirrored: 0.2
+}
+
+TEST(Sampling, BilinearHitsTexelCentresExactly) {
+    const MipChain chain(coordinates_texture(8, 8));
+    SamplerState state;
+    for (int i = 0; i < 8; ++i) {
+        const rl::Rgba c = to_rgba(sample(chain, {(i + 0.5f) / 8, (2 + 0.5f) / 8}, {}, state));
+        EXPECT_EQ(c.r, i);  // the centre of texel i: no blending with its neighbours
+        EXPECT_EQ(c.g, 2);
+    }
+}
+
+TEST(Sampling, NanAndInfinityGiveTheBorderColour) {
+    const MipChain chain(coordinates_texture(4, 4));
+    SamplerState state;
+    state.border = {0.25f, 0.5f, 0.75f, 1.0f};
+    const float nan = std::numeric_limits<float>::quiet_NaN(),
+                inf = std::numeric_limits<float>::infinity();
+    for (Filter f : kFilters) {
+        state.filter = f;
+        for (rl::vec2 uv : {rl::vec2{nan, 0.5f}, rl::vec2{0.5f, inf}, rl::vec2{-inf, nan}}) {
+            const rl::vec4 c = sample(chain, uv, {{nan, 0}, {0, inf}}, state);
+            EXPECT_EQ(c, state.border) << name(f);
+        }
+    }
+}
+
+TEST(Sampling, RepeatAtLargeCoordinatesIsLimitedByTheFloatItself) {
+    // At u = 10^4 a float still resolves about 0.001, half a texel of a
+    // 512-texel texture; at 10^6 only 0.0625, 32 texels.
+    const MipChain chain(coordinates_texture(256, 2));
+    auto texel_error = [&](float whole) {
+        int worst = 0;
+        for (int i = 0; i < 256; i += 7) {
+            const float u = whole + (i + 0.5f) / 256.0f;
+            worst = std::max(worst, std::abs(texel_hit(chain, {u, 0.25f}, Wrap::repeat).first - i));
+        }
+        return worst;
+    };
+    EXPECT_EQ(texel_error(0.0f), 0);
+    EXPECT_LE(texel_error(1e4f), 1);
+    EXPECT_GE(texel_error(1e6f), 8);  // the failure, measured: many texels off
+}
+
+TEST(MipChain, OddAndNonPowerOfTwoSizesGoDownToOneTexel) {
+    const MipChain chain(coordinates_texture(37, 23));
+    ASSERT_EQ(chain.levels(), 6);  // 37x23, 18x11, 9x5, 4x2, 2x1, 1x1
+    EXPECT_EQ(chain.level(1).width(), 18);
+    EXPECT_EQ(chain.level(1).height(), 11);
+    EXPECT_EQ(chain.level(5).width(), 1);
+    EXPECT_EQ(chain.level(5).height(), 1);
+    // The area-weighted box filter keeps the mean: the 1x1 level is the average texel.
+    const rl::Rgba last = chain.level(5).get(0, 0);
+    EXPECT_NEAR(last.r, 18, 1);  // mean of 0..36
+    EXPECT_NEAR(last.g, 11, 1);  // mean of 0..22
+}
+
+TEST(MipChain, OneTexelTexturesSampleToThatTexel) {
+    const MipChain chain(rl::Image(1, 1, rl::Rgba{10, 20, 30, 255}));
+    EXPECT_EQ(chain.levels(), 1);
+    for (Filter f : kFilters)
+        for (Wrap w : {Wrap::repeat, Wrap::mirror, Wrap::clamp}) {
+            SamplerState state{f, w, {}};
+            EXPECT_EQ(to_rgba(sample(chain, {3.7f, -12.2f}, {{0.5f, 0}, {0, 0.5f}}, state)),
+                      (rl::Rgba{10, 20, 30, 255}));
+        }
+}
+
+TEST(LevelOfDetail, FollowsTheLongerSideOfTheFootprint) {
+    EXPECT_FLOAT_EQ(level_of_detail({{1.0f / 256, 0}, {0, 1.0f / 256}}, 256, 256),
+                    0.0f);  // 1 texel per pixel
+    EXPECT_FLOAT_EQ(level_of_detail({{8.0f / 256, 0}, {0, 1.0f / 256}}, 256, 256),
+                    3.0f);  // 8 along x
+}
+
+TEST(Filters, TrilinearBeatsBilinearUnderMinification) {
+    rl::Image checker(64, 64);
+    for (int j = 0; j < 64; ++j)
+        for (int i = 0; i < 64; ++i)
+            checker.set(i, j,
+                        ((i + j) % 2) ? rl::Rgba{255, 255, 255, 255} : rl::Rgba{0, 0, 0, 255});
+    const MipChain chain(checker);
+    const AffineScene scene = minification_scene(checker, 24);
+    const rl::Image truth = footprint_average(checker, scene, 24);
+    SamplerState bilinear{Filter::bilinear, Wrap::repeat, {}},
+        trilinear{Filter::trilinear, Wrap::repeat, {}};
+    const double error_bilinear =
+        rl::compare_images(truth, render_scene(chain, scene, bilinear)).rmse;
+    const double error_trilinear =
+        rl::compare_images(truth, render_scene(chain, scene, trilinear)).rmse;
+    EXPECT_LT(error_trilinear, 0.5 * error_bilinear);
+}
+
+}  // namespace
