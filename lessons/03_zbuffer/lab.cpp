@@ -1,7 +1,8 @@
 // Lesson 03's lab. Hidden surfaces: the painter's algorithm and the BSP tree
 // against the z-buffer, on scenes with cycles and interpenetration. Depth
 // precision: each depth format on two planes 0.01 apart, over distance and
-// near/far range. Writes 03_hsr.csv, 03_depth.csv and 03_depth_sweep.csv.
+// near/far range. Writes 03_hsr.csv, 03_depth.csv, 03_depth_sweep.csv and
+// 03_depth_near.csv.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -129,6 +130,15 @@ int main(int argc, char** argv) {
                 sweep.add_row({std::string(name(f)), std::string("fitted to the planes"), d,
                                100.0 * zfight_share(f, fitted_range(at), at)});
             }
+        // Over the near/far ratio: the planes at distance 50, far 1000, near from 10 down to 1e-4.
+        rl::ResultsTable by_near({"format", "near_far_ratio", "zfight_percent"});
+        TwoPlanes at50 = planes;
+        at50.distance = 50;
+        for (DepthFormat f : kDepthFormats)
+            for (double n : {10.0, 1.0, 0.1, 0.01, 1e-3, 1e-4})
+                by_near.add_row({std::string(name(f)), 1000.0 / n,
+                                 100.0 * zfight_share(f, {static_cast<float>(n), 1000.0f}, at50)});
+        by_near.write_csv(options.out_dir / "03_depth_near.csv");
         hsr.write_csv(options.out_dir / "03_hsr.csv");
         depth.write_csv(options.out_dir / "03_depth.csv");
         sweep.write_csv(options.out_dir / "03_depth_sweep.csv");
