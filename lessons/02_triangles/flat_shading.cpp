@@ -11,6 +11,13 @@ float lambert(rl::vec3 normal, rl::vec3 to_light) {
     return std::max(0.0f, rl::dot(rl::normalize(normal), rl::normalize(to_light)));
 }
 
+rl::Rgba lit(rl::Rgba colour, float light) {
+    const auto scale = [light](std::uint8_t c) {
+        return static_cast<std::uint8_t>(std::lround(c * light));
+    };
+    return {scale(colour.r), scale(colour.g), scale(colour.b), 255};
+}
+
 // [doc:flat-shading]
 FlatStats draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options) {
     FlatStats stats;
@@ -28,12 +35,7 @@ FlatStats draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOpt
             continue;
         }
         const rl::vec3 normal = rl::cross(world[1] - world[0], world[2] - world[0]);
-        const float light = lambert(normal, options.light_direction);
-        const auto scale = [light](std::uint8_t c) {
-            return static_cast<std::uint8_t>(std::lround(c * light));
-        };
-        const rl::Rgba colour{scale(options.colour.r), scale(options.colour.g),
-                              scale(options.colour.b), 255};
+        const rl::Rgba colour = lit(options.colour, lambert(normal, options.light_direction));
         const bool ok = rasterize(options.method, screen, image.width(), image.height(),
                                   [&](int x, int y, rl::vec3) { image.at(x, y) = colour; });
         ++(ok ? stats.drawn : stats.refused);

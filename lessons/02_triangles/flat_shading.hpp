@@ -23,6 +23,9 @@ struct FlatStats {
 // to the cosine, n . l (clamped at 0: faces turned away get none).
 float lambert(rl::vec3 normal, rl::vec3 to_light);
 
+// A colour scaled by an amount of light in [0, 1] (alpha stays opaque).
+rl::Rgba lit(rl::Rgba colour, float light);
+
 FlatStats draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options);
 
 // The classic first picture: three triangles (red, white, green) in a

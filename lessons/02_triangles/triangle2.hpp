@@ -25,6 +25,13 @@ inline bool all_finite(const Triangle2& t) {
     return true;
 }
 
+// A vertex attribute (depth, texture coordinates, ...) at a pixel, from the
+// barycentric weights the rasterizers hand to the per-pixel step.
+template <class T>
+T interpolate(rl::vec3 weights, const T& a0, const T& a1, const T& a2) {
+    return a0 * weights.x + a1 * weights.y + a2 * weights.z;
+}
+
 // The range of pixel indices whose centres lie in [low, high], clamped to
 // [0, size - 1]; empty (first > last) when none do. Safe for any finite input.
 struct PixelRange {

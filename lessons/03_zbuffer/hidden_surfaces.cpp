@@ -1,6 +1,7 @@
 #include "hidden_surfaces.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "rasterlab/random.hpp"
@@ -25,7 +26,7 @@ void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 frame.colour.at(x, y) = t.colour;
                 frame.ids.at(x, y) = t.id;
-                frame.depth.at(x, y) = b.x * t.v[0].z + b.y * t.v[1].z + b.z * t.v[2].z;
+                frame.depth.at(x, y) = triangles::interpolate(b, t.v[0].z, t.v[1].z, t.v[2].z);
             });
 }
 
@@ -46,10 +47,8 @@ void draw_zbuffer(const std::vector<SceneTriangle>& triangles, Frame& frame) {
         triangles::rasterize_edge(
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 // Window depth is affine in screen space: interpolate it linearly.
-                const float z = b.x * t.v[0].z + b.y * t.v[1].z + b.z * t.v[2].z;
-                float& nearest = frame.depth.at(x, y);
-                if (!(z < nearest)) return;  // depth test `less`
-                nearest = z;
+                const float z = triangles::interpolate(b, t.v[0].z, t.v[1].z, t.v[2].z);
+                if (!passes_depth_test(frame.depth, x, y, z)) return;
                 frame.colour.at(x, y) = t.colour;
                 frame.ids.at(x, y) = t.id;
             });
@@ -67,8 +66,8 @@ rl::dvec3 as_double(rl::vec3 v) {
 constexpr double kOnPlane = 1e-4;
 
 // [doc:bsp-split]
-// Splits a convex polygon by the plane into the parts in front and behind.
-void split_polygon(const std::vector<rl::vec3>& polygon, const std::vector<double>& side,
+// Splits a triangle by the plane into the polygons in front and behind.
+void split_triangle(const std::array<rl::vec3, 3>& polygon, const std::array<double, 3>& side,
                    std::vector<rl::vec3>& front, std::vector<rl::vec3>& back) {
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i) {
@@ -109,7 +108,7 @@ std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTre
     node->offset = -rl::dot(node->normal, a);
     std::vector<SceneTriangle> front, back;
     for (const SceneTriangle& t : triangles) {
-        std::vector<double> side(3);
+        std::array<double, 3> side;
         bool any_front = false, any_back = false;
         for (int k = 0; k < 3; ++k) {
             side[static_cast<std::size_t>(k)] =
@@ -126,7 +125,7 @@ std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTre
             back.push_back(t);
         } else {  // straddles the plane: cut it
             std::vector<rl::vec3> in_front, behind;
-            split_polygon({t.v[0], t.v[1], t.v[2]}, side, in_front, behind);
+            split_triangle({t.v[0], t.v[1], t.v[2]}, side, in_front, behind);
             add_fan(in_front, t, front);
             add_fan(behind, t, back);
         }

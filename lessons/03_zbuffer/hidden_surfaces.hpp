@@ -24,6 +24,18 @@ struct Frame {
         : colour(width, height, background), ids(width, height, -1), depth(width, height, 1.0f) {}
 };
 
+// [doc:depth-test]
+// The depth test `less`: when z is nearer than what the buffer holds at
+// (x, y), store it and return true; otherwise leave the buffer alone.
+inline bool passes_depth_test(rl::FloatImage& depth, int x, int y, float z) {
+    float& nearest = depth.at(x, y);
+    if (!(z < nearest)) return false;
+    nearest = z;
+    return true;
+}
+
+// [/doc:depth-test]
+
 // Draws every triangle in the given order with no depth test: the last one wins.
 void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame);
 

@@ -38,12 +38,9 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
                 t.v[k] = to_window(world[k], width, height);
             }
             if (triangles::signed_area2(screen(t)) <= 0) continue;  // back face
-            const float light_amount =
-                triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light);
-            auto scale = [&](std::uint8_t c) {
-                return static_cast<std::uint8_t>(std::lround(c * light_amount));
-            };
-            t.colour = {scale(base.r), scale(base.g), scale(base.b), 255};
+            t.colour = triangles::lit(
+                base,
+                triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light));
             t.id = static_cast<int>(scene.size());
             scene.push_back(t);
         }

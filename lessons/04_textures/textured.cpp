@@ -41,12 +41,10 @@ std::size_t draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh, const Mip
         ++drawn;
         // [doc:textured-pixel]
         triangles::rasterize_edge(tri, width, height, [&](int x, int y, rl::vec3 b) {
-            const float z = b.x * window[0].z + b.y * window[1].z + b.z * window[2].z;
-            float& nearest = frame.depth.at(x, y);
-            if (!(z < nearest)) return;
-            nearest = z;
+            const float z = triangles::interpolate(b, window[0].z, window[1].z, window[2].z);
+            if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
             const rl::vec2 at =
-                uv[0] * b.x + uv[1] * b.y + uv[2] * b.z;  // affine: exact in orthographic views
+                triangles::interpolate(b, uv[0], uv[1], uv[2]);  // affine: exact here
             rl::vec4 colour = sample(texture, at, derivatives, options.sampler);
             colour = {colour.x * shade, colour.y * shade, colour.z * shade, 1.0f};
             frame.colour.at(x, y) = to_rgba(colour);

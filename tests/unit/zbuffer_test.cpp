@@ -106,8 +106,9 @@ TEST(ZBuffer, StartsClearedToTheFarPlaneAndTestsLess) {
         {{{5, 5, 0.999f}, {60, 5, 0.999f}, {5, 60, 0.999f}}, {255, 0, 0, 255}, 0},
         {{{5, 5, 1.0f}, {60, 5, 1.0f}, {60, 60, 1.0f}}, {0, 255, 0, 255}, 1}};
     const Frame frame = rendered(HsrMethod::zbuffer, near_far, 64);
-    EXPECT_EQ(frame.ids.get(10, 10), 0);   // just in front of the far plane: drawn
-    EXPECT_EQ(frame.ids.get(50, 20), -1);  // exactly at the far plane: not nearer than the clear value
+    EXPECT_EQ(frame.ids.get(10, 10), 0);  // just in front of the far plane: drawn
+    EXPECT_EQ(frame.ids.get(50, 20),
+              -1);  // exactly at the far plane: not nearer than the clear value
 }
 
 }  // namespace
