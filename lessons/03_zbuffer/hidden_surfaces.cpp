@@ -68,7 +68,7 @@ constexpr double kOnPlane = 1e-4;
 // [doc:bsp-split]
 // Splits a triangle by the plane into the polygons in front and behind.
 void split_triangle(const std::array<rl::vec3, 3>& polygon, const std::array<double, 3>& side,
-                   std::vector<rl::vec3>& front, std::vector<rl::vec3>& back) {
+                    std::vector<rl::vec3>& front, std::vector<rl::vec3>& back) {
     const std::size_t n = polygon.size();
     for (std::size_t i = 0; i < n; ++i) {
         const std::size_t j = (i + 1) % n;
