@@ -1,50 +1,246 @@
 #include "rasterlab/file_io.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <atomic>
 #include <cerrno>
+#include <climits>
+#include <csignal>
 #include <cstring>
-#include <fstream>
+#include <new>
 #include <random>
-#include <system_error>
+#include <utility>
 
 namespace rl {
+namespace {
 
-std::vector<std::uint8_t> read_file(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw FileError(path, "is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path, std::string("cannot open for reading: ") + std::strerror(errno));
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)),
-                                    std::istreambuf_iterator<char>());
-    if (in.bad()) throw FileError(path, "read failed");
+std::string errno_text() {
+    return std::strerror(errno);
+}
+
+std::string mebibytes(std::uintmax_t bytes) {
+    return std::to_string(bytes >> 20) + " MiB";
+}
+
+// Closes a file descriptor on every path out of a function.
+class Descriptor {
+  public:
+    explicit Descriptor(int fd) : fd_(fd) {}
+    Descriptor(const Descriptor&) = delete;
+    Descriptor& operator=(const Descriptor&) = delete;
+    ~Descriptor() {
+        if (fd_ >= 0) ::close(fd_);
+    }
+    int get() const { return fd_; }
+    int release() { return std::exchange(fd_, -1); }
+
+  private:
+    int fd_;
+};
+
+// ---------------------------------------------------------------------------
+// Temporaries left by a process stopped with Ctrl-C or `kill`: the signal
+// handler removes those still registered, then lets the signal take its course.
+// Fixed-size storage, since a signal handler may not allocate.
+constexpr int kMaxPending = 16;
+char g_pending[kMaxPending][PATH_MAX];
+std::atomic<bool> g_pending_used[kMaxPending];
+
+extern "C" void remove_pending_and_reraise(int signal_number) {
+    for (int i = 0; i < kMaxPending; ++i)
+        if (g_pending_used[i].load()) ::unlink(g_pending[i]);
+    std::signal(signal_number, SIG_DFL);
+    std::raise(signal_number);
+}
+
+void install_cleanup_handlers() {
+    static const bool installed = [] {
+        for (int s : {SIGINT, SIGTERM, SIGHUP}) {
+            struct sigaction current {};
+            sigaction(s, nullptr, &current);
+            if (current.sa_handler == SIG_DFL) std::signal(s, remove_pending_and_reraise);
+        }
+        return true;
+    }();
+    (void)installed;
+}
+
+int register_pending(const std::filesystem::path& temporary) {
+    install_cleanup_handlers();
+    const std::string& text = temporary.native();
+    if (text.size() >= PATH_MAX) return -1;
+    for (int i = 0; i < kMaxPending; ++i) {
+        if (g_pending_used[i].load()) continue;
+        std::memcpy(g_pending[i], text.c_str(), text.size() + 1);
+        g_pending_used[i].store(true);
+        return i;
+    }
+    return -1;  // more than kMaxPending at once: still removed on error, not on a signal
+}
+
+void unregister_pending(const std::filesystem::path& temporary) {
+    for (int i = 0; i < kMaxPending; ++i)
+        if (g_pending_used[i].load() && temporary.native() == g_pending[i])
+            g_pending_used[i].store(false);
+}
+
+void remove_temporary(const std::filesystem::path& temporary) {
+    ::unlink(temporary.c_str());
+    unregister_pending(temporary);
+}
+
+// ".rasterlab-tmp-<6 random letters>-<target name>", cut so that it is no
+// longer than the longest name a folder holds (255 bytes here) even when the
+// target's own name is that long.
+std::filesystem::path temporary_beside(const std::filesystem::path& target) {
+    static std::mt19937_64 random{std::random_device{}()};
+    static constexpr char letters[] = "abcdefghijklmnopqrstuvwxyz0123456789";
+    std::string name = kTemporaryPrefix;
+    for (int i = 0; i < 6; ++i) name += letters[random() % (sizeof letters - 1)];
+    name += '-';
+    name += target.filename().string();
+    constexpr std::size_t kNameMax = 255;
+    if (name.size() > kNameMax) name.resize(kNameMax);
+    return target.parent_path() / name;
+}
+
+void write_all(int fd, std::span<const std::uint8_t> bytes, const std::filesystem::path& path) {
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) throw FileError(path, "write failed: " + errno_text());
+        done += static_cast<std::size_t>(n);
+    }
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> read_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
+    // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below.
+    Descriptor fd(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    if (fd.get() < 0) throw FileError(path, "cannot open for reading: " + errno_text());
+    struct stat info {};
+    if (::fstat(fd.get(), &info) != 0) throw FileError(path, "cannot inspect: " + errno_text());
+    if (S_ISDIR(info.st_mode)) throw FileError(path, "is a directory");
+    if (!S_ISREG(info.st_mode))
+        throw FileError(path,
+                        "is not a regular file (a device, FIFO or socket); refusing to read it");
+    const auto size = static_cast<std::uintmax_t>(info.st_size);
+    if (size > max_bytes)
+        throw FileError(path, "is " + mebibytes(size) + ", more than the " + mebibytes(max_bytes) +
+                                  " this program reads");
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes.resize(static_cast<std::size_t>(size));
+    } catch (const std::bad_alloc&) {
+        throw FileError(path, "out of memory reading " + mebibytes(size));
+    }
+    std::size_t done = 0;
+    while (done < bytes.size()) {
+        const ssize_t n = ::read(fd.get(), bytes.data() + done, bytes.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n < 0) throw FileError(path, "read failed: " + errno_text());
+        if (n == 0) break;  // the file shrank while we read it
+        done += static_cast<std::size_t>(n);
+    }
+    bytes.resize(done);
     return bytes;
 }
 
-void write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
-    // A random suffix keeps two writers of the same file from sharing a temporary.
-    std::random_device entropy;
-    std::filesystem::path temporary = path;
-    temporary += ".tmp" + std::to_string(entropy());
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw FileError(path, std::string("cannot open for writing: ") + std::strerror(errno));
-        out.write(reinterpret_cast<const char*>(bytes.data()),
-                  static_cast<std::streamsize>(bytes.size()));
-        out.flush();
-        if (!out) {
-            out.close();
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            throw FileError(path, "write failed (disk full?)");
+std::filesystem::path resolve_output(const std::filesystem::path& path) {
+    std::filesystem::path target = path;
+    for (int hops = 0; hops < 40; ++hops) {
+        std::error_code ec;
+        if (!std::filesystem::is_symlink(target, ec)) return target;
+        const std::filesystem::path link = std::filesystem::read_symlink(target, ec);
+        if (ec) throw FileError(path, "cannot read symbolic link: " + ec.message());
+        target = link.is_absolute() ? link : target.parent_path() / link;
+    }
+    throw FileError(path, "too many levels of symbolic links");
+}
+
+void check_output(const std::filesystem::path& path) {
+    if (path.empty()) throw FileError(path, "empty output path");
+    const std::filesystem::path target = resolve_output(path);
+    if (!target.has_filename()) throw FileError(path, "names a folder, not a file");
+    std::filesystem::path folder = target.parent_path();
+    if (folder.empty()) folder = ".";
+    struct stat info {};
+    if (::stat(folder.c_str(), &info) != 0)
+        throw FileError(path, "cannot write into " + folder.string() + ": " + errno_text());
+    if (!S_ISDIR(info.st_mode))
+        throw FileError(path, "cannot write into " + folder.string() + ": not a folder");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        throw FileError(path, "cannot write into " + folder.string() + ": " + errno_text());
+    if (::lstat(target.c_str(), &info) != 0) {
+        if (errno == ENOENT) return;  // a new file
+        throw FileError(path, "cannot inspect: " + errno_text());
+    }
+    if (S_ISDIR(info.st_mode)) throw FileError(path, "is a directory; refusing to replace it");
+    if (!S_ISREG(info.st_mode))
+        throw FileError(path,
+                        "is not a regular file (a device, FIFO or socket); refusing to replace it");
+    // Root may write anything, so ask the permission bits rather than access().
+    if ((info.st_mode & S_IWUSR) == 0)
+        throw FileError(path, "is read-only; refusing to replace it");
+}
+
+OutputFiles::~OutputFiles() {
+    for (const Staged& s : staged_) remove_temporary(s.temporary);
+}
+
+void OutputFiles::stage(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+    check_output(path);
+    Staged s{path, resolve_output(path), {}};
+    // Keep an existing file's permission bits; a new file gets 0666 less the umask.
+    mode_t mode = 0666;
+    struct stat info {};
+    const bool exists = ::stat(s.target.c_str(), &info) == 0;
+    if (exists) mode = info.st_mode & 07777;
+    int raw_fd = -1;
+    for (int attempt = 0; attempt < 16 && raw_fd < 0; ++attempt) {
+        s.temporary = temporary_beside(s.target);
+        raw_fd = ::open(s.temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, mode);
+        if (raw_fd < 0 && errno != EEXIST)
+            throw FileError(path, "cannot open for writing: " + errno_text());
+    }
+    if (raw_fd < 0) throw FileError(path, "cannot create a temporary file beside it");
+    register_pending(s.temporary);
+    Descriptor fd(raw_fd);
+    try {
+        if (exists && ::fchmod(fd.get(), mode) != 0)
+            throw FileError(path, "cannot keep its permissions: " + errno_text());
+        write_all(fd.get(), bytes, path);
+        if (::close(fd.release()) != 0) throw FileError(path, "write failed: " + errno_text());
+    } catch (...) {
+        remove_temporary(s.temporary);
+        throw;
+    }
+    staged_.push_back(std::move(s));
+}
+
+void OutputFiles::commit() {
+    // Every output is complete on disk before the first rename; a rename
+    // within one folder does not fail for want of space.
+    for (std::size_t i = 0; i < staged_.size(); ++i) {
+        const Staged& s = staged_[i];
+        if (::rename(s.temporary.c_str(), s.target.c_str()) != 0) {
+            const std::string problem = "cannot replace file: " + errno_text();
+            staged_.erase(staged_.begin(), staged_.begin() + static_cast<std::ptrdiff_t>(i));
+            throw FileError(s.requested, problem);
         }
+        unregister_pending(s.temporary);
     }
-    std::error_code ec;
-    std::filesystem::rename(temporary, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        throw FileError(path, "cannot replace file: " + ec.message());
-    }
+    staged_.clear();
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+    OutputFiles out;
+    out.stage(path, bytes);
+    out.commit();
 }
 
 }  // namespace rl

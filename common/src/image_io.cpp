@@ -8,6 +8,7 @@
 #include <climits>
 #include <cstring>
 #include <memory>
+#include <new>
 
 namespace rl {
 namespace {
@@ -54,34 +55,53 @@ void append_bytes(void* context, void* data, int size) {
     out->insert(out->end(), bytes, bytes + size);
 }
 
-}  // namespace
-
-Image load_image(const std::filesystem::path& path) {
-    if (lower_extension(path) == ".tga") return read_tga(path);
-    return load_with_stb(path);
-}
-
-void write_png(const std::filesystem::path& path, const Image& image) {
+std::vector<std::uint8_t> encode_png(const std::filesystem::path& path, const Image& image) {
     Image top_first = image;
     top_first.flip_vertically();
     std::vector<std::uint8_t> png;
     const int ok = stbi_write_png_to_func(append_bytes, &png, image.width(), image.height(), 4,
                                           top_first.pixels().data(), image.width() * 4);
     if (!ok) throw FileError(path, "PNG encoding failed");
-    write_file_atomically(path, png);
+    return png;
+}
+
+void check_extension(const std::filesystem::path& path) {
+    const std::string ext = lower_extension(path);
+    if (ext != ".tga" && ext != ".png")
+        throw FileError(path, "unknown image extension '" + ext + "' (use .tga or .png)");
+}
+
+}  // namespace
+
+Image load_image(const std::filesystem::path& path) {
+    try {
+        if (lower_extension(path) == ".tga") return read_tga(path);
+        return load_with_stb(path);
+    } catch (const std::bad_alloc&) {
+        throw FileError(path, "out of memory decoding the image");
+    }
+}
+
+void write_png(const std::filesystem::path& path, const Image& image) {
+    write_file_atomically(path, encode_png(path, image));
+}
+
+std::vector<std::uint8_t> encode_image(const std::filesystem::path& path, const Image& image,
+                                       bool keep_alpha) {
+    check_extension(path);
+    if (lower_extension(path) == ".png") return encode_png(path, image);
+    TgaWriteOptions options;
+    options.format = keep_alpha ? TgaPixelFormat::bgra32 : TgaPixelFormat::bgr24;
+    return encode_tga(image, options);
+}
+
+void check_image_output(const std::filesystem::path& path) {
+    check_extension(path);
+    check_output(path);
 }
 
 void save_image(const std::filesystem::path& path, const Image& image, bool keep_alpha) {
-    const std::string ext = lower_extension(path);
-    if (ext == ".tga") {
-        TgaWriteOptions options;
-        options.format = keep_alpha ? TgaPixelFormat::bgra32 : TgaPixelFormat::bgr24;
-        write_tga(path, image, options);
-    } else if (ext == ".png") {
-        write_png(path, image);
-    } else {
-        throw FileError(path, "unknown image extension '" + ext + "' (use .tga or .png)");
-    }
+    write_file_atomically(path, encode_image(path, image, keep_alpha));
 }
 
 }  // namespace rl

@@ -49,6 +49,8 @@ class ByteReader {
         return start;
     }
 
+    std::size_t remaining() const { return bytes_.size() - position_; }
+
   private:
     std::span<const std::uint8_t> bytes_;
     const std::string& name_;
@@ -196,8 +198,20 @@ Image decode_tga(std::span<const std::uint8_t> bytes, const std::string& name) {
             static_cast<std::size_t>(h.colour_map_length) * ((h.colour_map_entry_bits + 7u) / 8u),
             "colour map");
 
-    std::vector<Rgba> file_order(static_cast<std::size_t>(h.width) * h.height);
+    // Check that the bytes the header promises are there before allocating:
+    // an 18-byte file claiming 65535 x 4096 pixels must not cost a gigabyte.
+    const std::size_t pixel_count = static_cast<std::size_t>(h.width) * h.height;
     const int bpp = h.bytes_per_pixel();
+    const std::size_t least_bytes =  // RLE: at best one run packet per 128 pixels
+        h.rle() ? (pixel_count + 127) / 128 * (1u + static_cast<std::size_t>(bpp))
+                : pixel_count * static_cast<std::size_t>(bpp);
+    if (reader.remaining() < least_bytes)
+        fail(name, "truncated pixel data: a " + std::to_string(h.width) + "x" +
+                       std::to_string(h.height) + (h.rle() ? " RLE" : "") +
+                       " image needs at least " + std::to_string(least_bytes) +
+                       " bytes, the file has " + std::to_string(reader.remaining()) +
+                       " after its header");
+    std::vector<Rgba> file_order(pixel_count);
     if (h.rle()) {
         decode_rle_pixels(reader, bpp, file_order, name);
     } else {

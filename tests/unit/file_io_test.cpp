@@ -1,4 +1,10 @@
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <csignal>
+
+#include <functional>
 
 #include "rasterlab/file_io.hpp"
 #include "temp_dir.hpp"
@@ -41,6 +47,147 @@ TEST(FileIo, ErrorsNameThePath) {
     } catch (const rl::FileError& e) {
         EXPECT_NE(std::string(e.what()).find(missing.string()), std::string::npos);
     }
+}
+
+// ---------------------------------------------------------------------------
+// Reading: regular files only, never more than the cap.
+
+std::string message_of(const std::function<void()>& action) {
+    try {
+        action();
+    } catch (const rl::FileError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+TEST(FileIo, DevicesAndFifosAreRefusedWithoutReading) {
+    // /dev/zero would be read until memory runs out; a FIFO would wait forever.
+    EXPECT_NE(message_of([] { rl::read_file("/dev/zero"); }).find("not a regular file"),
+              std::string::npos);
+    rl_test::TempDir dir;
+    const auto fifo = dir.path() / "pipe.tga";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_NE(message_of([&] { rl::read_file(fifo); }).find("not a regular file"),
+              std::string::npos);
+}
+
+TEST(FileIo, FilesOverTheCapAreRefusedNamingTheCap) {
+    rl_test::TempDir dir;
+    const auto path = dir.path() / "big.bin";
+    rl_test::write_text(path, std::string(3u << 20, 'x'));  // 3 MiB
+    EXPECT_EQ(rl::read_file(path, 3u << 20).size(), 3u << 20);
+    const std::string message = message_of([&] { rl::read_file(path, 2u << 20); });
+    EXPECT_NE(message.find("more than the 2 MiB"), std::string::npos) << message;
+}
+
+// ---------------------------------------------------------------------------
+// Writing: through links, never over what is not ours to replace.
+
+TEST(FileIo, ReadOnlyFilesAreRefusedAndKept) {
+    rl_test::TempDir dir;
+    const auto path = dir.path() / "keep.tga";
+    rl_test::write_text(path, "old");
+    std::filesystem::permissions(path, std::filesystem::perms::owner_read);
+    const std::vector<std::uint8_t> bytes = {1, 2, 3};
+    EXPECT_NE(message_of([&] { rl::write_file_atomically(path, bytes); }).find("read-only"),
+              std::string::npos);
+    EXPECT_EQ(rl::read_file(path), (std::vector<std::uint8_t>{'o', 'l', 'd'}));
+    EXPECT_EQ(std::filesystem::status(path).permissions(), std::filesystem::perms::owner_read);
+    EXPECT_EQ(entries(dir.path()), 1u);
+}
+
+TEST(FileIo, DevicesAreNeverReplaced) {
+    // Checked, not written: as root a rename would replace /dev/null itself.
+    EXPECT_NE(message_of([] { rl::check_output("/dev/null"); }).find("not a regular file"),
+              std::string::npos);
+    rl_test::TempDir dir;
+    const auto fifo = dir.path() / "pipe.tga";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const std::vector<std::uint8_t> bytes = {1};
+    EXPECT_THROW(rl::write_file_atomically(fifo, bytes), rl::FileError);
+    EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+}
+
+TEST(FileIo, SymbolicLinksAreWrittenThrough) {
+    rl_test::TempDir dir;
+    std::filesystem::create_directory(dir.path() / "real");
+    const auto target = dir.path() / "real" / "image.tga";
+    rl_test::write_text(target, "old");
+    const auto link = dir.path() / "link.tga";
+    std::filesystem::create_symlink("real/image.tga", link);  // relative, as users make them
+    const std::vector<std::uint8_t> bytes = {4, 5};
+    rl::write_file_atomically(link, bytes);
+    EXPECT_TRUE(std::filesystem::is_symlink(link));
+    EXPECT_EQ(rl::read_file(target), bytes);
+    // A dangling link creates its target.
+    const auto dangling = dir.path() / "dangling.tga";
+    std::filesystem::create_symlink("real/new.tga", dangling);
+    rl::write_file_atomically(dangling, bytes);
+    EXPECT_TRUE(std::filesystem::is_symlink(dangling));
+    EXPECT_EQ(rl::read_file(dir.path() / "real" / "new.tga"), bytes);
+}
+
+TEST(FileIo, ReplacingKeepsTheFilesPermissions) {
+    rl_test::TempDir dir;
+    const auto path = dir.path() / "private.tga";
+    rl_test::write_text(path, "old");
+    const auto mode = std::filesystem::perms::owner_read | std::filesystem::perms::owner_write;
+    std::filesystem::permissions(path, mode);
+    const std::vector<std::uint8_t> bytes = {1};
+    rl::write_file_atomically(path, bytes);
+    EXPECT_EQ(std::filesystem::status(path).permissions(), mode);
+}
+
+TEST(FileIo, ALongestFileNameWorksAndTemporariesAreRecognisable) {
+    rl_test::TempDir dir;
+    const auto path = dir.path() / (std::string(251, 'n') + ".tga");  // 255 bytes
+    const std::vector<std::uint8_t> bytes = {7};
+    rl::write_file_atomically(path, bytes);
+    EXPECT_EQ(rl::read_file(path), bytes);
+    {
+        rl::OutputFiles out;
+        out.stage(dir.path() / "a.tga", bytes);
+        bool found = false;
+        for (const auto& entry : std::filesystem::directory_iterator(dir.path()))
+            found |= entry.path().filename().string().starts_with(rl::kTemporaryPrefix);
+        EXPECT_TRUE(found);
+    }  // not committed: the temporary goes, nothing is written
+    EXPECT_EQ(entries(dir.path()), 1u);
+}
+
+TEST(FileIo, OutputSetsAreAllOrNothing) {
+    rl_test::TempDir dir;
+    const auto first = dir.path() / "first.tga", second = dir.path() / "second.tga";
+    rl_test::write_text(first, "old");
+    const std::vector<std::uint8_t> bytes = {1, 2};
+    {
+        rl::OutputFiles out;
+        out.stage(first, bytes);
+        EXPECT_THROW(out.stage(dir.path() / "absent" / "second.tga", bytes), rl::FileError);
+    }
+    EXPECT_EQ(rl::read_file(first), (std::vector<std::uint8_t>{'o', 'l', 'd'}));
+    rl::OutputFiles both;
+    both.stage(first, bytes);
+    both.stage(second, bytes);
+    both.commit();
+    EXPECT_EQ(rl::read_file(first), bytes);
+    EXPECT_EQ(rl::read_file(second), bytes);
+    EXPECT_EQ(entries(dir.path()), 2u);
+}
+
+TEST(FileIoDeathTest, AKilledWriteLeavesNoTemporary) {
+    rl_test::TempDir dir;
+    const auto path = dir.path() / "out.tga";
+    EXPECT_EXIT(
+        {
+            rl::OutputFiles out;
+            const std::vector<std::uint8_t> bytes(1000, 1);
+            out.stage(path, bytes);
+            std::raise(SIGTERM);
+        },
+        testing::KilledBySignal(SIGTERM), "");
+    EXPECT_EQ(entries(dir.path()), 0u);
 }
 
 }  // namespace

@@ -69,8 +69,15 @@ std::vector<BadFile> corpus() {
         {"id_past_end", id_past_end, "truncated image ID field"},
         {"colour_map_past_end", map_past_end, "truncated colour map"},
         {"raw_truncated", with(header(2, 2, 2, 24), {1, 2, 3, 4, 5, 6}), "truncated pixel data"},
-        {"rle_no_packets", header(10, 2, 2, 24), "truncated RLE packet header"},
-        {"rle_run_truncated", with(header(10, 2, 2, 32), {0x83, 1, 2}), "truncated RLE run"},
+        {"rle_no_packets", header(10, 2, 2, 24), "truncated pixel data"},
+        {"rle_packet_missing", with(header(10, 200, 1, 24), {0xff, 1, 2, 3, 0x00, 1, 2, 3}),
+         "truncated RLE packet header"},
+        {"rle_run_truncated", with(header(10, 2, 2, 32), {0x81, 1, 2, 3, 4, 0x81, 1, 2}),
+         "truncated RLE run"},
+        // The header alone claims 16384 x 16384: refused from the length the
+        // header implies, before the gigabyte of pixels is allocated.
+        {"huge_header_only", header(2, 16384, 16384, 32), "needs at least 1073741824 bytes"},
+        {"huge_rle_header_only", header(10, 16384, 16384, 32), "needs at least 10485760 bytes"},
         {"rle_raw_truncated", with(header(11, 2, 2, 8), {0x03, 1, 2}), "truncated RLE raw packet"},
         {"rle_run_overrun", with(header(11, 2, 2, 8), {0x84, 9}), "overruns the image"},
         {"rle_raw_overrun", with(header(11, 2, 2, 8), {0x7f, 1, 2, 3, 4}), "overruns the image"},

@@ -1,4 +1,16 @@
-// Whole-file reads and all-or-nothing writes.
+// Whole-file reads with a size cap, and all-or-nothing writes.
+//
+//   std::vector<std::uint8_t> bytes = rl::read_file("in.tga");   // regular files only
+//   rl::OutputFiles out;                 // several outputs, all or nothing:
+//   out.check("a.tga"); out.check("b.png");          // before any work is done
+//   out.stage("a.tga", bytes_a); out.stage("b.png", bytes_b);
+//   out.commit();                        // renames every temporary over its target
+//
+// The rules (docs/robustness.md): only regular files are read, never more
+// than a stated number of bytes; an output is written beside its target and
+// renamed over it, so a reader sees the old file or the whole new one; a
+// symbolic link is written through to its target; a read-only file, a
+// directory or a device is refused, never replaced.
 #pragma once
 
 #include <cstdint>
@@ -18,10 +30,50 @@ class FileError : public std::runtime_error {
         : std::runtime_error(path.string() + ": " + problem) {}
 };
 
-std::vector<std::uint8_t> read_file(const std::filesystem::path& path);
+// The most any input file may hold unless a caller says otherwise: 256 MiB,
+// well above the largest image the codecs accept (2^28 pixels are refused
+// anyway, and a texture of that size would not fit a lesson's memory).
+inline constexpr std::uintmax_t kMaxInputBytes = std::uintmax_t{256} << 20;
 
-// Writes to a temporary file beside `path`, then renames it over `path`, so
-// readers see either the old file or the complete new one, never half of it.
+// Reads a regular file whole. Refuses directories, devices, FIFOs and files
+// larger than `max_bytes`, naming the file and the cap.
+std::vector<std::uint8_t> read_file(const std::filesystem::path& path,
+                                    std::uintmax_t max_bytes = kMaxInputBytes);
+
+// Where a write to `path` lands: `path` itself, or the file a symbolic link
+// (or a chain of them) points to. Throws FileError for a loop.
+std::filesystem::path resolve_output(const std::filesystem::path& path);
+
+// Throws FileError unless `path` can be written without harm: its folder
+// exists and is writable, and it is absent or a writable regular file.
+void check_output(const std::filesystem::path& path);
+
+// A set of outputs written all or nothing. stage() writes a temporary beside
+// each target; commit() renames them all over their targets; the destructor
+// removes any temporary not committed (also on an exception).
+class OutputFiles {
+  public:
+    OutputFiles() = default;
+    OutputFiles(const OutputFiles&) = delete;
+    OutputFiles& operator=(const OutputFiles&) = delete;
+    ~OutputFiles();
+
+    void check(const std::filesystem::path& path) { check_output(path); }
+    void stage(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
+    void commit();
+
+  private:
+    struct Staged {
+        std::filesystem::path requested, target, temporary;
+    };
+    std::vector<Staged> staged_;
+};
+
+// One output written alone, all or nothing.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
+
+// The prefix every temporary file starts with (after a dot), so that one left
+// behind by a killed process is recognisable: ".rasterlab-tmp-".
+inline constexpr const char* kTemporaryPrefix = ".rasterlab-tmp-";
 
 }  // namespace rl

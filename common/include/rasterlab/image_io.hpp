@@ -19,4 +19,31 @@ void write_png(const std::filesystem::path& path, const Image& image);
 // Writes .tga (RLE, 24-bit unless `keep_alpha`) or .png, chosen by extension.
 void save_image(const std::filesystem::path& path, const Image& image, bool keep_alpha = false);
 
+// The bytes save_image() would write to `path`: TGA or PNG by its extension.
+std::vector<std::uint8_t> encode_image(const std::filesystem::path& path, const Image& image,
+                                       bool keep_alpha = false);
+
+// Throws FileError unless `path` ends in .tga or .png and check_output()
+// accepts it. Programs call it for every output before they start work, so
+// that a bad path costs nothing and replaces nothing.
+void check_image_output(const std::filesystem::path& path);
+
+// Several images written all or nothing (see OutputFiles):
+//   rl::ImageOutputs out; out.check(a); out.check(b);   // before rendering
+//   out.stage(a, image_a); out.stage(b, image_b); out.commit();
+class ImageOutputs {
+  public:
+    void check(const std::filesystem::path& path) { check_image_output(path); }
+    void stage(const std::filesystem::path& path, const Image& image, bool keep_alpha = false) {
+        files_.stage(path, encode_image(path, image, keep_alpha));
+    }
+    void stage_bytes(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+        files_.stage(path, bytes);
+    }
+    void commit() { files_.commit(); }
+
+  private:
+    OutputFiles files_;
+};
+
 }  // namespace rl
