@@ -2,7 +2,13 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <new>
 #include <sstream>
+
+#include "obj_validation.hpp"
 
 namespace rl {
 namespace {
@@ -27,18 +33,95 @@ int checked_index(int index, std::size_t count, const char* what, const std::str
     return index;
 }
 
-Mesh convert(const tinyobj::ObjReader& reader, const std::string& name,
+// What tinyobjloader hands back for one file.
+struct Parsed {
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> materials;
+    std::string warning, error;
+    bool ok = false;
+};
+
+// Reads the MTL files an OBJ names as every other input is read: regular
+// files only, under a size cap. A missing or refused MTL is a warning, as
+// tinyobjloader's own reader makes it.
+class BoundedMaterialReader : public tinyobj::MaterialReader {
+  public:
+    explicit BoundedMaterialReader(std::filesystem::path folder) : folder_(std::move(folder)) {}
+    bool operator()(const std::string& file, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warning,
+                    std::string*) override {
+        try {
+            const std::vector<std::uint8_t> bytes = read_file(folder_ / file, kMaxMtlBytes);
+            std::istringstream in(std::string(bytes.begin(), bytes.end()));
+            std::string mtl_warning;
+            tinyobj::LoadMtl(names, materials, &in, &mtl_warning, nullptr);
+            *warning += mtl_warning;
+            return true;
+        } catch (const FileError& e) {
+            *warning += std::string("material file ") + e.what() + "\n";
+            return false;
+        }
+    }
+
+  private:
+    std::filesystem::path folder_;
+};
+
+// Material text given directly (for tests): every mtllib reads it.
+class TextMaterialReader : public tinyobj::MaterialReader {
+  public:
+    explicit TextMaterialReader(std::string_view text) : text_(text) {}
+    bool operator()(const std::string&, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warning,
+                    std::string*) override {
+        std::istringstream in(text_);
+        tinyobj::LoadMtl(names, materials, &in, warning, nullptr);
+        return true;
+    }
+
+  private:
+    std::string text_;
+};
+
+Parsed parse(std::string_view obj_text, tinyobj::MaterialReader& materials,
+             const std::string& name) {
+    validate_obj_text(obj_text, name);
+    Parsed parsed;
+    try {
+        std::istringstream in{std::string(obj_text)};
+        parsed.ok = tinyobj::LoadObj(&parsed.attrib, &parsed.shapes, &parsed.materials,
+                                     &parsed.warning, &parsed.error, &in, &materials,
+                                     /*triangulate=*/true, /*default_vcols_fallback=*/false);
+    } catch (const std::bad_alloc&) {
+        throw MeshError(name, "out of memory parsing the OBJ");
+    }
+    return parsed;
+}
+
+bool all_finite(const std::vector<tinyobj::real_t>& values) {
+    for (tinyobj::real_t v : values)
+        if (!std::isfinite(v)) return false;
+    return true;
+}
+
+Mesh convert(const Parsed& parsed, const std::string& name,
              const std::filesystem::path& material_folder, std::vector<std::string>* warnings) {
-    if (!reader.Valid()) throw MeshError(name, "cannot load OBJ: " + reader.Error());
-    for (const std::string& line : split_lines(reader.Warning())) {
+    if (!parsed.ok) throw MeshError(name, "cannot load OBJ: " + parsed.error);
+    for (const std::string& line : split_lines(parsed.warning)) {
         for (std::string_view fatal : kFatalWarnings)
             if (line.find(fatal) != std::string::npos)
                 throw MeshError(name, "malformed OBJ: " + line +
                                           " (faces need three or more valid vertex indices)");
         if (warnings) warnings->push_back(name + ": " + line);
     }
+    // validate_obj_text() has refused every non-finite number in the text;
+    // this is the same rule checked on what the parser made of it.
+    if (!all_finite(parsed.attrib.vertices) || !all_finite(parsed.attrib.texcoords) ||
+        !all_finite(parsed.attrib.normals))
+        throw MeshError(name, "a coordinate is not a finite number");
 
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
+    const tinyobj::attrib_t& attrib = parsed.attrib;
     Mesh mesh;
     mesh.source = name;
     for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
@@ -49,7 +132,7 @@ Mesh convert(const tinyobj::ObjReader& reader, const std::string& name,
     for (std::size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
         mesh.normals.push_back({attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]});
 
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    for (const tinyobj::shape_t& shape : parsed.shapes) {
         const auto& indices = shape.mesh.indices;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
             if (shape.mesh.num_face_vertices[f] != 3)
@@ -75,7 +158,7 @@ Mesh convert(const tinyobj::ObjReader& reader, const std::string& name,
     auto resolve = [&](const std::string& file) {
         return file.empty() ? std::filesystem::path{} : material_folder / file;
     };
-    for (const tinyobj::material_t& m : reader.GetMaterials()) {
+    for (const tinyobj::material_t& m : parsed.materials) {
         Material material;
         material.name = m.name;
         material.diffuse = resolve(m.diffuse_texname);
@@ -91,34 +174,40 @@ Mesh convert(const tinyobj::ObjReader& reader, const std::string& name,
     return mesh;
 }
 
-tinyobj::ObjReaderConfig reader_config() {
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    return config;
-}
-
 }  // namespace
+
+std::uintmax_t max_obj_bytes() {
+    if (const char* text = std::getenv("RASTERLAB_MAX_OBJ_MB")) {
+        char* end = nullptr;
+        const unsigned long long mib = std::strtoull(text, &end, 10);
+        if (end != text && *end == '\0' && mib > 0 && mib <= (1ull << 20)) return mib << 20;
+    }
+    return kDefaultMaxObjBytes;
+}
 
 Mesh load_obj(const std::filesystem::path& path, std::vector<std::string>* warnings) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw MeshError(path,
-                        std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
-    tinyobj::ObjReaderConfig config = reader_config();
-    config.mtl_search_path = path.parent_path().string();
-    tinyobj::ObjReader reader;
-    reader.ParseFromFile(path.string(), config);
-    Mesh mesh = convert(reader, path.string(), path.parent_path(), warnings);
+    if (!std::filesystem::exists(path, ec)) throw MeshError(path, "no such file");
+    std::vector<std::uint8_t> bytes;
+    try {
+        bytes = read_file(path, max_obj_bytes());
+    } catch (const FileError& e) {
+        throw MeshError(path, std::string(e.what()).substr(path.string().size() + 2) +
+                                  " (set RASTERLAB_MAX_OBJ_MB to raise the cap)");
+    }
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    BoundedMaterialReader materials(path.parent_path());
+    Mesh mesh =
+        convert(parse(text, materials, path.string()), path.string(), path.parent_path(), warnings);
     mesh.source = path;
     return mesh;
 }
 
 Mesh parse_obj(std::string_view obj_text, std::string_view mtl_text, const std::string& name,
                std::vector<std::string>* warnings) {
-    tinyobj::ObjReader reader;
-    reader.ParseFromString(std::string(obj_text), std::string(mtl_text), reader_config());
-    return convert(reader, name, std::filesystem::path(name).parent_path(), warnings);
+    TextMaterialReader materials(mtl_text);
+    return convert(parse(obj_text, materials, name), name,
+                   std::filesystem::path(name).parent_path(), warnings);
 }
 
 }  // namespace rl

@@ -72,8 +72,11 @@ Texture load_texture(const Mesh& mesh, int material, TextureRole role,
     } catch (const FileError& e) {
         warnings.push_back(std::string(e.what()) + "; using a neutral default " +
                            texture_suffix(role) + " texture");
-        return default_texture(role);
+    } catch (const std::exception& e) {  // out of memory, or anything else: still optional
+        warnings.push_back(path->string() + ": " + e.what() + "; using a neutral default " +
+                           texture_suffix(role) + " texture");
     }
+    return default_texture(role);
 }
 
 }  // namespace rl

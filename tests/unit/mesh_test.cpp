@@ -1,6 +1,11 @@
 // OBJ loading: triangulation, index forms, and malformed files.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
+#include <cmath>
+#include <cstdlib>
+
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/mesh.hpp"
 #include "rasterlab/textures.hpp"
@@ -106,27 +111,107 @@ TEST_P(MalformedObj, IsRefusedWithAClearMessage) {
 
 INSTANTIATE_TEST_SUITE_P(
     Corpus, MalformedObj,
-    testing::Values(BadObj{"index_zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero value"},
-                    BadObj{"index_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
-                           "out of range"},
-                    BadObj{"uv_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/4\n",
-                           "texture coordinate index 4 is out of range"},
-                    BadObj{"quad_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 7\n",
-                           "invalid vertex index"},
-                    BadObj{"two_vertices.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "three or more"},
-                    BadObj{"no_faces.obj", "v 0 0 0\nv 1 0 0\n", "holds no faces"},
-                    BadObj{"empty.obj", "", "holds no faces"}),
+    testing::Values(
+        BadObj{"index_zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n",
+               "line 4: vertex index 0 is out of range"},
+        BadObj{"index_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n", "out of range"},
+        BadObj{"uv_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/4\n",
+               "texture coordinate index 4 is out of range"},
+        BadObj{"quad_too_big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 7\n",
+               "vertex index 7 is out of range (the file defines 3)"},
+        BadObj{"two_vertices.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "three or more"},
+        BadObj{"no_faces.obj", "v 0 0 0\nv 1 0 0\n", "holds no faces"},
+        BadObj{"empty.obj", "", "holds no faces"},
+        // Values tinyobjloader itself reads silently wrong.
+        BadObj{"nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n",
+               "line 1: 'nan' is not a finite number"},
+        BadObj{"inf.obj", "v 0 0 0\nv 1 -inf 0\nv 0 1 0\nf 1 2 3\n",
+               "line 2: '-inf' is not a finite number"},
+        BadObj{"overflow.obj", "v 0 0 0\nv 1 0 0\nv 0 1 1e400\nf 1 2 3\n",
+               "'1e400' is beyond the range of a float"},
+        BadObj{"beyond_float.obj", "v 0 0 0\nv 1 0 0\nv 0 1 1e39\nf 1 2 3\n",
+               "'1e39' is beyond the range of a float"},
+        BadObj{"garbage.obj", "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n", "'zero' is not a number"},
+        BadObj{"nan_normal.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 nan\nf 1 2 3\n",
+               "line 4: 'nan' is not a finite number"},
+        BadObj{"inf_uv.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt inf 0\nf 1 2 3\n",
+               "line 4: 'inf' is not a finite number"},
+        BadObj{"index_wraps.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4294967297\n",
+               "vertex index 4294967297 is out of range"},
+        BadObj{"index_20_digits.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 18446744073709551619\n",
+               "vertex index 18446744073709551619 is out of range"},
+        BadObj{"index_int_max_plus_one.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2147483648\n",
+               "vertex index 2147483648 is out of range"},
+        BadObj{"relative_too_far.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\n",
+               "line 3: vertex index -3 is out of range (the file defines 2 before "
+               "this line)"},
+        BadObj{"normal_index_wraps.obj",
+               "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4294967297\n",
+               "normal index 4294967297 is out of range"},
+        BadObj{"index_not_integer.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3.5\n",
+               "vertex index '3.5' is not an integer"}),
     [](const auto& param_info) {
         std::string name = param_info.param.name;
         return name.substr(0, name.find('.'));
     });
 
-TEST(Mesh, UnknownAndGarbledLinesDoNotStopLoading) {
+TEST(Mesh, UnknownLinesAndCommentsDoNotStopLoading) {
     std::vector<std::string> warnings;
-    const Mesh mesh =
-        rl::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nfrobnicate 1 2 3\nv not numbers\n\nf 1 2 3\n", "",
-                      "garbled.obj", &warnings);
+    const Mesh mesh = rl::parse_obj(
+        "v 0 0 0 # origin\nv 1 0 0\r\nv +0 1 0\nfrobnicate 1 2 3\n\n# f 9 9 9\nf 1 2 3\n", "",
+        "unknown.obj", &warnings);
     EXPECT_EQ(mesh.triangles.size(), 1u);
+}
+
+TEST(Mesh, FacesBeyondTheVertexCapAreRefusedQuickly) {
+    // tinyobjloader's ear clipping is quadratic: 10^5 vertices took 23 s.
+    auto polygon = [](std::size_t n) {
+        std::string text;
+        for (std::size_t i = 0; i < n; ++i) {
+            const double a = 6.283185307179586 * static_cast<double>(i) / static_cast<double>(n);
+            text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+        }
+        text += "f";
+        for (std::size_t i = 1; i <= n; ++i) text += " " + std::to_string(i);
+        return text + "\n";
+    };
+    EXPECT_EQ(rl::parse_obj(polygon(rl::kMaxFaceVertices), "", "cap.obj").triangles.size(),
+              rl::kMaxFaceVertices - 2);
+    try {
+        rl::parse_obj(polygon(100000), "", "huge_face.obj");
+        FAIL() << "loaded a face of 10^5 vertices";
+    } catch (const rl::MeshError& e) {
+        EXPECT_NE(std::string(e.what()).find("more than the 4096"), std::string::npos) << e.what();
+    }
+}
+
+TEST(Mesh, FilesOverTheSizeCapAreRefusedNamingTheOverride) {
+    rl_test::TempDir dir;
+    const auto path = dir.path() / "big.obj";
+    rl_test::write_text(path, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" + std::string(2u << 20, '#'));
+    ::setenv("RASTERLAB_MAX_OBJ_MB", "1", 1);
+    try {
+        rl::load_obj(path);
+        ADD_FAILURE() << "loaded a file over the cap";
+    } catch (const rl::MeshError& e) {
+        EXPECT_NE(std::string(e.what()).find("RASTERLAB_MAX_OBJ_MB"), std::string::npos)
+            << e.what();
+    }
+    ::setenv("RASTERLAB_MAX_OBJ_MB", "3", 1);
+    EXPECT_EQ(rl::load_obj(path).triangles.size(), 1u);
+    ::unsetenv("RASTERLAB_MAX_OBJ_MB");
+    EXPECT_EQ(rl::max_obj_bytes(), rl::kDefaultMaxObjBytes);
+}
+
+TEST(Mesh, DevicesAsMaterialFilesAreWarnedAbout) {
+    rl_test::TempDir dir;
+    std::filesystem::create_symlink("/dev/zero", dir.path() / "zero.mtl");
+    rl_test::write_text(dir.path() / "m.obj",
+                        "mtllib zero.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    std::vector<std::string> warnings;
+    EXPECT_EQ(rl::load_obj(dir.path() / "m.obj", &warnings).triangles.size(), 1u);
+    ASSERT_FALSE(warnings.empty());
+    EXPECT_NE(warnings[0].find("not a regular file"), std::string::npos) << warnings[0];
 }
 
 TEST(Mesh, UnreadableFileIsNamed) {
@@ -188,6 +273,23 @@ TEST(Textures, MissingOrBrokenTexturesWarnAndFallBack) {
     EXPECT_NE(warnings[0].find("gone.tga"), std::string::npos) << warnings[0];
     EXPECT_NE(warnings[1].find("m_spec.tga"), std::string::npos) << warnings[1];
     EXPECT_NE(warnings[2].find("no nm_tangent texture"), std::string::npos) << warnings[2];
+}
+
+TEST(Textures, DevicesFifosAndHugeFilesFallBackWithAWarning) {
+    rl_test::TempDir dir;
+    ASSERT_EQ(::mkfifo((dir.path() / "pipe.png").c_str(), 0600), 0);
+    rl_test::write_text(dir.path() / "m.mtl",
+                        "newmtl a\nmap_Kd /dev/zero\nmap_Ks pipe.png\nbump /dev/urandom\n");
+    rl_test::write_text(dir.path() / "m.obj",
+                        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl a\nf 1 2 3\n");
+    const Mesh mesh = rl::load_obj(dir.path() / "m.obj");
+    std::vector<std::string> warnings;
+    for (rl::TextureRole role :
+         {rl::TextureRole::diffuse, rl::TextureRole::specular, rl::TextureRole::normal_tangent})
+        EXPECT_TRUE(rl::load_texture(mesh, 0, role, warnings).is_default);
+    ASSERT_EQ(warnings.size(), 3u);
+    for (const std::string& w : warnings)
+        EXPECT_NE(w.find("not a regular file"), std::string::npos) << w;
 }
 
 }  // namespace

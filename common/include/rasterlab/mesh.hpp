@@ -52,9 +52,24 @@ struct Mesh {
     }
 };
 
+// The largest OBJ file load_obj() reads: 256 MiB, unless the environment
+// variable RASTERLAB_MAX_OBJ_MB says otherwise (a whole number of MiB).
+inline constexpr std::uintmax_t kDefaultMaxObjBytes = std::uintmax_t{256} << 20;
+std::uintmax_t max_obj_bytes();
+
+// Vertices one face may have: tinyobjloader triangulates by ear clipping,
+// whose time grows with the square of the count (4096 take milliseconds,
+// 10^5 took 23 s).
+inline constexpr std::size_t kMaxFaceVertices = 4096;
+
+// The largest MTL file read: 16 MiB (an MTL holds a few lines per material).
+inline constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t{16} << 20;
+
 // Loads an OBJ and its MTL files. Throws MeshError naming the file and the
 // problem (with tinyobjloader's own message) for an unreadable or malformed
-// file: index 0 or out of range, a face of fewer than three vertices.
+// file: index 0 or out of range, a face of fewer than three vertices or more
+// than kMaxFaceVertices, a coordinate that is not a finite float, a file
+// over max_obj_bytes(). Details: docs/robustness.md.
 // Warnings that do not stop loading are appended to `warnings`.
 Mesh load_obj(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
 
