@@ -1,7 +1,9 @@
 // Lesson 00: the framebuffer. Make an image, set its pixels, write it as TGA
 // (raw and RLE), read both back, check them, and export a PNG.
 // Read docs/00_framebuffer.md beside this file.
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 
 #include "rasterlab/cli.hpp"
 #include "rasterlab/image_io.hpp"
@@ -17,6 +19,12 @@ struct Options {
     bool raw = false;
 };
 
+bool is_png(const std::string& path) {
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".png";
+}
+
 // Encodes `image` in one TGA variant, decodes the bytes again and checks that
 // every pixel came back. Returns the encoded size.
 std::size_t round_trip(const rl::Image& image, const rl::TgaWriteOptions& options,
@@ -29,6 +37,11 @@ std::size_t round_trip(const rl::Image& image, const rl::TgaWriteOptions& option
 
 int run(const Options& options) {
     const auto& [output, width, height] = options.image;
+    // Both outputs are checked before any work and written only when both are
+    // ready: a bad --png path must not cost the TGA, nor replace it.
+    rl::ImageOutputs outputs;
+    outputs.check(output);
+    if (!options.png.empty()) outputs.check(options.png);
     // [doc:lesson00-main]
     const rl::Image card = lesson00::make_test_card(width, height);
 
@@ -43,16 +56,17 @@ int run(const Options& options) {
         width, height, raw_size, rle_size,
         100.0 * static_cast<double>(rle_size) / static_cast<double>(raw_size));
 
-    rl::write_tga(output, card, options.raw ? raw : rle);
-    const rl::Image from_disk = rl::read_tga(output);  // and check what landed on disk
+    if (is_png(output))  // the extension decides the format, as in every lesson
+        outputs.stage(output, card);
+    else
+        outputs.stage_bytes(output, rl::encode_tga(card, options.raw ? raw : rle));
+    if (!options.png.empty()) outputs.stage(options.png, card);
+    outputs.commit();
+    const rl::Image from_disk = rl::load_image(output);  // and check what landed on disk
     if (from_disk != card) throw std::runtime_error(output + " does not read back identical");
-    std::printf("wrote %s\n", output.c_str());
     // [/doc:lesson00-main]
-
-    if (!options.png.empty()) {
-        rl::write_png(options.png, card);
-        std::printf("wrote %s\n", options.png.c_str());
-    }
+    std::printf("wrote %s\n", output.c_str());
+    if (!options.png.empty()) std::printf("wrote %s\n", options.png.c_str());
     return 0;
 }
 
@@ -65,7 +79,8 @@ int main(int argc, char** argv) {
     Options o;
     rl::add_image_options(app, o.image);
     app.add_option("--png", o.png, "Also export the image as PNG to this path");
-    app.add_flag("--raw", o.raw, "Write the output uncompressed (type 2) instead of RLE (type 10)");
+    app.add_flag("--raw", o.raw,
+                 "Write the TGA output uncompressed (type 2) instead of RLE (type 10)");
     CLI11_PARSE(app, argc, argv);
     return rl::guarded_main("00_framebuffer", [&] { return run(o); });
 }

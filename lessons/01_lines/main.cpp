@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     const auto& [output, width, height] = image_options;
 
     return rl::guarded_main("01_lines", [&] {
+        rl::check_image_output(output);  // before any work: a bad path costs nothing
         std::vector<std::string> warnings;
         const rl::Mesh mesh = rl::load_obj(model, &warnings);
         rl::print_warnings("01_lines", warnings);

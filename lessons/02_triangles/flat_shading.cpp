@@ -19,8 +19,8 @@ rl::Rgba lit(rl::Rgba colour, float light) {
 }
 
 // [doc:flat-shading]
-FlatStats draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options) {
-    FlatStats stats;
+DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options) {
+    DrawCounts stats;
     for (const rl::Triangle& face : mesh.triangles) {
         Triangle2 screen;
         rl::vec3 world[3];

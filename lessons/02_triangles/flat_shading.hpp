@@ -15,10 +15,6 @@ struct FlatOptions {
     rl::Rgba colour{235, 225, 205, 255};
 };
 
-struct FlatStats {
-    std::size_t drawn = 0, culled = 0, refused = 0;
-};
-
 // Lambert's cosine law: a face lit at an angle receives light in proportion
 // to the cosine, n . l (clamped at 0: faces turned away get none).
 float lambert(rl::vec3 normal, rl::vec3 to_light);
@@ -26,7 +22,7 @@ float lambert(rl::vec3 normal, rl::vec3 to_light);
 // A colour scaled by an amount of light in [0, 1] (alpha stays opaque).
 rl::Rgba lit(rl::Rgba colour, float light);
 
-FlatStats draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options);
+DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options);
 
 // The classic first picture: three triangles (red, white, green) in a
 // 200 x 200 image, as tinyrenderer's second lesson draws them.

@@ -19,9 +19,7 @@ int main(int argc, char** argv) {
     rl::add_model_option(app, model);
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--raster", method, triangles::kRasterMethods, "Rasterizer");
-    app.add_option("--light", light, "Direction towards the light, x y z")
-        ->expected(3)
-        ->capture_default_str();
+    rl::add_light_option(app, light);
     app.add_flag("--no-cull", no_cull, "Draw back faces too");
     app.add_flag("--test-image", test_image, "Draw the classic three triangles (200x200) instead");
     app.add_flag(
@@ -32,6 +30,8 @@ int main(int argc, char** argv) {
     const auto& [output, width, height] = image_options;
 
     return rl::guarded_main("02_triangles", [&] {
+        rl::check_image_output(output);  // before any work: a bad path costs nothing
+        rl::check_direction("--light", light);
         if (overdraw) {
             rl::save_image(output, triangles::overdraw_fan(method, 48, 12));
             std::printf("overdraw fan drawn with %s into %s\n", triangles::name(method),
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
         options.method = method;
         options.cull_back_faces = !no_cull;
         options.light_direction = {light[0], light[1], light[2]};
-        const triangles::FlatStats stats = triangles::draw_flat_shaded(image, mesh, options);
+        const triangles::DrawCounts stats = triangles::draw_flat_shaded(image, mesh, options);
         rl::save_image(output, image);
         std::printf("%s: %zu faces drawn, %zu culled, %zu refused, with %s into %s\n",
                     model.c_str(), stats.drawn, stats.culled, stats.refused,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 
@@ -15,6 +16,12 @@
 
 namespace triangles {
 
+// What became of a model's faces: drawn, culled as back faces, or refused by
+// the rasterizer (see rasterize()). Every drawing lesson reports all three.
+struct DrawCounts {
+    std::size_t drawn = 0, culled = 0, refused = 0;
+};
+
 enum class RasterMethod { scanline, bbox, edge };
 
 inline constexpr std::array<RasterMethod, 3> kRasterMethods = {
@@ -23,8 +30,9 @@ inline constexpr std::array<RasterMethod, 3> kRasterMethods = {
 const char* name(RasterMethod method);
 
 // Fills the triangle with the chosen method. Returns false when the method
-// refused the triangle (a NaN or infinite vertex; for `edge`, a vertex
-// beyond the fixed-point range, see kMaxFixedCoordinate).
+// refused the triangle: a NaN or infinite vertex, or one farther than
+// kMaxCoordinate (2^22 pixels) from the origin. Every method keeps its
+// calls to `shade` inside [0, width) x [0, height) for every input.
 template <class Shade>
 bool rasterize(RasterMethod method, const Triangle2& t, int width, int height, Shade&& shade) {
     switch (method) {

@@ -11,7 +11,7 @@ namespace triangles {
 // [doc:raster-bbox]
 template <class Shade>
 bool rasterize_bbox(const Triangle2& t, int width, int height, Shade&& shade) {
-    if (!all_finite(t)) return false;
+    if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;  // degenerate: covers nothing
     const PixelRange xs = centres_between(std::min({t.v[0].x, t.v[1].x, t.v[2].x}),

@@ -14,12 +14,6 @@ namespace triangles {
 inline constexpr int kSubpixelBits = 8;
 inline constexpr std::int64_t kSubpixels = std::int64_t{1} << kSubpixelBits;  // 256 per pixel
 
-// Vertices must satisfy |x|, |y| <= 2^22 pixels (4,194,304): then every
-// coordinate difference fits 31 bits and every edge-function product 62.
-// Beyond that the triangle is refused; lesson 05's clipping keeps real
-// scenes far inside.
-inline constexpr float kMaxFixedCoordinate = 4194304.0f;
-
 struct FixedPoint {
     std::int64_t x, y;  // in 1/256 pixel
 };
@@ -43,10 +37,7 @@ inline bool is_top_left(FixedPoint a, FixedPoint b) {
 // [doc:raster-edge]
 template <class Shade>
 bool rasterize_edge(const Triangle2& t, int width, int height, Shade&& shade) {
-    if (!all_finite(t)) return false;
-    for (const rl::vec2& p : t.v)
-        if (std::abs(p.x) > kMaxFixedCoordinate || std::abs(p.y) > kMaxFixedCoordinate)
-            return false;
+    if (!within_raster_range(t)) return false;  // |x|, |y| <= 2^22: the products fit 62 bits
     FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
     std::int64_t area =
         (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);

@@ -19,7 +19,7 @@ inline rl::vec3 barycentric(const Triangle2& t, rl::vec2 p, float area) {
 // [doc:raster-scanline]
 template <class Shade>
 bool rasterize_scanline(const Triangle2& t, int width, int height, Shade&& shade) {
-    if (!all_finite(t)) return false;
+    if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;
     rl::vec2 lo = t.v[0], mid = t.v[1], hi = t.v[2];  // sorted by y

@@ -19,10 +19,21 @@ inline float signed_area2(const Triangle2& t) {
     return rl::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]);
 }
 
-inline bool all_finite(const Triangle2& t) {
+// How far from the origin a vertex may lie, in pixels, for any of the
+// rasterizers: 2^22 (4,194,304). Within it the fixed-point edge functions fit
+// 64-bit integers (every difference fits 31 bits, every product 62), and the
+// float methods, whose spacing there is half a pixel, still get only about
+// one pixel in a thousand wrong (tests/unit/triangles_test.cpp); beyond it
+// their errors grow with the coordinates, and from 10^19 a float edge
+// function overflows. A triangle reaching beyond is
+// refused (drawn not at all, and counted): lesson 05 clips real scenes to a
+// guard band far inside it. NaN and infinity are refused the same way.
+inline constexpr float kMaxCoordinate = 4194304.0f;
+
+inline bool within_raster_range(const Triangle2& t) {
     for (const rl::vec2& p : t.v)
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return false;
-    return true;
+        if (!(std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate)) return false;
+    return true;  // (the negated test is false for NaN, so NaN is refused too)
 }
 
 // A vertex attribute (depth, texture coordinates, ...) at a pixel, from the

@@ -22,11 +22,11 @@ const char* name(HsrMethod method) {
 
 void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
     for (const SceneTriangle& t : triangles)
-        triangles::rasterize_edge(
+        frame.refused += !triangles::rasterize_edge(
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 frame.colour.at(x, y) = t.colour;
                 frame.ids.at(x, y) = t.id;
-                frame.depth.at(x, y) = triangles::interpolate(b, t.v[0].z, t.v[1].z, t.v[2].z);
+                frame.depth.at(x, y) = interpolate_depth(b, t.v[0].z, t.v[1].z, t.v[2].z);
             });
 }
 
@@ -44,10 +44,10 @@ void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame) {
 // [doc:zbuffer]
 void draw_zbuffer(const std::vector<SceneTriangle>& triangles, Frame& frame) {
     for (const SceneTriangle& t : triangles)
-        triangles::rasterize_edge(
+        frame.refused += !triangles::rasterize_edge(
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 // Window depth is affine in screen space: interpolate it linearly.
-                const float z = triangles::interpolate(b, t.v[0].z, t.v[1].z, t.v[2].z);
+                const float z = interpolate_depth(b, t.v[0].z, t.v[1].z, t.v[2].z);
                 if (!passes_depth_test(frame.depth, x, y, z)) return;
                 frame.colour.at(x, y) = t.colour;
                 frame.ids.at(x, y) = t.id;
@@ -98,6 +98,9 @@ void add_fan(const std::vector<rl::vec3>& polygon, const SceneTriangle& source,
 std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTree& tree,
                                     int depth) {
     if (triangles.empty()) return nullptr;
+    if (depth > kMaxBspDepth)
+        throw BspTooLarge("BSP tree deeper than " + std::to_string(kMaxBspDepth) +
+                          " levels; refusing (draw this scene with --hsr zbuffer)");
     tree.depth = std::max(tree.depth, depth);
     ++tree.nodes;
     auto node = std::make_unique<BspNode>();
@@ -128,6 +131,11 @@ std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTre
             split_triangle({t.v[0], t.v[1], t.v[2]}, side, in_front, behind);
             add_fan(in_front, t, front);
             add_fan(behind, t, back);
+            tree.pieces += in_front.size() + behind.size() - 5;  // 2 or 3 pieces replace 1
+            if (tree.pieces > tree.max_pieces)
+                throw BspTooLarge("BSP tree: splitting made more than " +
+                                  std::to_string(tree.max_pieces) +
+                                  " triangles; refusing (draw this scene with --hsr zbuffer)");
         }
     }
     node->front = build_node(std::move(front), tree, depth + 1);
@@ -154,8 +162,14 @@ BspTree build_bsp(std::vector<SceneTriangle> triangles) {
     for (std::size_t i = triangles.size(); i > 1; --i)  // Fisher-Yates, reproducible
         std::swap(triangles[i - 1], triangles[static_cast<std::size_t>(random.next() % i)]);
     BspTree tree;
+    tree.pieces = triangles.size();
+    tree.max_pieces = max_bsp_pieces(triangles.size());
     tree.root = build_node(std::move(triangles), tree, 1);
     return tree;
+}
+
+std::size_t max_bsp_pieces(std::size_t input_triangles) {
+    return kBspPiecesPerTriangle * input_triangles + kBspExtraPieces;
 }
 
 void draw_bsp(const BspTree& tree, Frame& frame) {

@@ -4,8 +4,10 @@
 // them pixel by pixel. Derivations: docs/03_zbuffer.md.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <memory>
+#include <stdexcept>
 
 #include "scene.hpp"
 
@@ -19,7 +21,8 @@ const char* name(HsrMethod method);
 struct Frame {
     rl::Image colour;
     rl::Grid<int> ids;
-    rl::FloatImage depth;  // window depth, 1 (the far plane) where nothing was drawn
+    rl::FloatImage depth;     // window depth, 1 (the far plane) where nothing was drawn
+    std::size_t refused = 0;  // triangles the rasterizer refused (see triangles::rasterize)
     Frame(int width, int height, rl::Rgba background = {16, 18, 24, 255})
         : colour(width, height, background), ids(width, height, -1), depth(width, height, 1.0f) {}
 };
@@ -32,6 +35,17 @@ inline bool passes_depth_test(rl::FloatImage& depth, int x, int y, float z) {
     if (!(z < nearest)) return false;
     nearest = z;
     return true;
+}
+
+// The depth a fragment carries into the test: window depth interpolated
+// with the rasterizer's weights, kept within the range of the triangle's
+// three vertex depths. A convex combination never leaves that range, but
+// float weights that sum to 1 - 2^-24 do: a triangle lying exactly on the far
+// plane (z = 1 at every vertex) would pass `less` against a cleared buffer in
+// about a fifth of its pixels. Clamped, it passes in none.
+inline float interpolate_depth(rl::vec3 weights, float z0, float z1, float z2) {
+    const float z = triangles::interpolate(weights, z0, z1, z2);
+    return std::clamp(z, std::min({z0, z1, z2}), std::max({z0, z1, z2}));
 }
 
 // [/doc:depth-test]
@@ -61,6 +75,21 @@ struct BspTree {
     std::size_t triangles = 0;  // after splitting
     std::size_t nodes = 0;
     int depth = 0;
+    std::size_t pieces = 0, max_pieces = 0;  // triangles made so far, and the cap
+};
+
+// Splitting can multiply the triangles without limit: 3000 random triangles
+// once took 59 s and 9.6 GB. The build refuses (throws BspTooLarge) once the
+// pieces exceed 8 per input triangle plus 65536, or the tree grows deeper
+// than kMaxBspDepth (its recursion must fit the stack).
+inline constexpr std::size_t kBspPiecesPerTriangle = 8;
+inline constexpr std::size_t kBspExtraPieces = 65536;
+inline constexpr int kMaxBspDepth = 2000;
+std::size_t max_bsp_pieces(std::size_t input_triangles);
+
+class BspTooLarge : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
 };
 
 // Builds the tree; the splitting plane of each node is the first remaining

@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
     std::string depth_output;
     rl::ImageOptions image_options{"03_zbuffer.tga"};
     zbuffer::HsrMethod method = zbuffer::HsrMethod::zbuffer;
-    app.add_option("-m,--model", model,
-                   "OBJ file to draw alone (default: the rock pierced by the torus)");
+    const CLI::Option* model_option = app.add_option(
+        "-m,--model", model, "OBJ file to draw alone (default: the rock pierced by the torus)");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--hsr", method, zbuffer::kHsrMethods, "Hidden-surface method");
     app.add_option("--depth-out", depth_output, "Also write the depth buffer as a picture here");
@@ -42,20 +42,32 @@ int main(int argc, char** argv) {
     bool fitted = false;
     rl::add_method_option(*zfight, "--format", format, zbuffer::kDepthFormats, "Depth format");
     zfight->add_option("--distance", planes.distance, "Distance to the planes")
+        ->check(rl::finite_number(1e-3, 1e6))
         ->capture_default_str();
-    zfight->add_option("--near", range.near_plane, "Near plane")->capture_default_str();
-    zfight->add_option("--far", range.far_plane, "Far plane")->capture_default_str();
+    zfight->add_option("--near", range.near_plane, "Near plane")
+        ->check(rl::positive_number())
+        ->capture_default_str();
+    zfight->add_option("--far", range.far_plane, "Far plane")
+        ->check(rl::positive_number())
+        ->capture_default_str();
     zfight->add_flag("--fitted", fitted, "Fit near and far to the planes instead");
     CLI11_PARSE(app, argc, argv);
     const auto& [output, width, height] = image_options;
+    const bool model_given = model_option->count() > 0;  // even as --model '': no such file
 
     return rl::guarded_main("03_zbuffer", [&] {
+        // Every output is checked before any work and written only when all
+        // are ready, so a bad --depth-out cannot cost the colour image.
+        rl::ImageOutputs outputs;
+        outputs.check(output);
+        if (!depth_output.empty()) outputs.check(depth_output);
         if (zfight->parsed()) {
             planes.size = std::min(width, height);
             if (fitted) range = zbuffer::fitted_range(planes);
             if (!(range.near_plane > 0 && range.near_plane < range.far_plane))
                 throw std::invalid_argument("need 0 < near < far");
-            rl::save_image(output, zbuffer::zfight_map(format, range, planes));
+            outputs.stage(output, zbuffer::zfight_map(format, range, planes));
+            outputs.commit();
             std::printf(
                 "z-fighting with %s, near %g, far %g, distance %g: %.2f%% of pixels, in %s\n",
                 zbuffer::name(format), range.near_plane, range.far_plane, planes.distance,
@@ -63,25 +75,27 @@ int main(int argc, char** argv) {
             return 0;
         }
         std::vector<zbuffer::Placement> placements = zbuffer::default_placements();
-        if (!model.empty()) placements = {{model}};
+        if (model_given) placements = {{model}};
         std::vector<std::string> warnings;
         std::vector<zbuffer::SceneTriangle> scene;
+        std::size_t culled = 0;
         const int size = std::min(width, height);
         if (scene_name == "sticks")
             scene = zbuffer::cyclic_sticks(size);
         else if (scene_name == "soup")
             scene = zbuffer::random_soup(60, size, 9);
         else
-            scene = zbuffer::build_scene(placements, width, height, &warnings);
+            scene = zbuffer::build_scene(placements, width, height, &warnings, &culled);
         rl::print_warnings("03_zbuffer", warnings);
         // [doc:lesson03-main]
         zbuffer::Frame frame(width, height);
         zbuffer::render(method, scene, frame);
-        rl::save_image(output, frame.colour);
-        if (!depth_output.empty())
-            rl::save_image(depth_output, zbuffer::depth_picture(frame.depth));
+        outputs.stage(output, frame.colour);
+        if (!depth_output.empty()) outputs.stage(depth_output, zbuffer::depth_picture(frame.depth));
+        outputs.commit();
         // [/doc:lesson03-main]
-        std::printf("%zu triangles drawn with %s into %s\n", scene.size(), zbuffer::name(method),
+        std::printf("%zu triangles drawn, %zu culled, %zu refused, with %s into %s\n",
+                    scene.size() - frame.refused, culled, frame.refused, zbuffer::name(method),
                     output.c_str());
         return 0;
     });

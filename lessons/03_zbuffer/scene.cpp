@@ -23,7 +23,8 @@ rl::vec3 to_window(rl::vec3 p, int width, int height) {
 }
 
 std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements, int width,
-                                       int height, std::vector<std::string>* warnings) {
+                                       int height, std::vector<std::string>* warnings,
+                                       std::size_t* culled) {
     std::vector<SceneTriangle> scene;
     const rl::vec3 light{0.3f, 0.5f, 1.0f};
     const rl::Rgba base{235, 225, 205, 255};
@@ -37,7 +38,10 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
                            placement.offset;
                 t.v[k] = to_window(world[k], width, height);
             }
-            if (triangles::signed_area2(screen(t)) <= 0) continue;  // back face
+            if (triangles::signed_area2(screen(t)) <= 0) {  // back face
+                if (culled) ++*culled;
+                continue;
+            }
             t.colour = triangles::lit(
                 base,
                 triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light));

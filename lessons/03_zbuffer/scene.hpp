@@ -34,10 +34,11 @@ rl::mat3 rotation_y(float degrees);
 // the viewer looks down -z, so window depth is (1 - z) / 2: z = 1 is nearest.
 rl::vec3 to_window(rl::vec3 model, int width, int height);
 
-// Loads and places the models, culls back faces, shades each face flat
-// (lesson 02's Lambert) and numbers the faces in order.
+// Loads and places the models, culls back faces (counted in `culled`),
+// shades each face flat (lesson 02's Lambert) and numbers the faces in order.
 std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements, int width,
-                                       int height, std::vector<std::string>* warnings = nullptr);
+                                       int height, std::vector<std::string>* warnings = nullptr,
+                                       std::size_t* culled = nullptr);
 
 // The lesson's default: the rock with a tilted torus passing through it.
 std::vector<Placement> default_placements();

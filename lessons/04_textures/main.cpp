@@ -23,18 +23,24 @@ int main(int argc, char** argv) {
     rl::add_method_option(app, "--wrap", options.sampler.wrap, textures::kWraps, "Wrap mode");
     app.add_option("--uv-scale", options.uv_scale,
                    "Multiply texture coordinates by this (shows wrapping)")
+        ->check(rl::finite_number(-1e7, 1e7))
         ->capture_default_str();
     app.add_option("--uv-offset", options.uv_offset.x, "Then add this to u and v")
+        ->check(rl::finite_number(-1e7, 1e7))
         ->capture_default_str();
     app.add_option("--turn", turn, "Rotate the model about x, then y, in degrees")
         ->expected(2)
+        ->check(rl::finite_number(-3600, 3600))
         ->capture_default_str();
-    app.add_option("--scale", options.scale, "Scale the model")->capture_default_str();
+    app.add_option("--scale", options.scale, "Scale the model")
+        ->check(rl::finite_number(1e-6, 1e6))
+        ->capture_default_str();
     app.add_flag("--no-light", no_light, "Texture colour only, no Lambert shading");
     CLI11_PARSE(app, argc, argv);
     const auto& [output, width, height] = image_options;
 
     return rl::guarded_main("04_textures", [&] {
+        rl::check_image_output(output);  // before any work: a bad path costs nothing
         options.uv_offset.y = options.uv_offset.x;
         options.lighting = !no_light;
         options.rotation = zbuffer::rotation_y(turn[1]) * zbuffer::rotation_x(turn[0]);
@@ -46,12 +52,13 @@ int main(int argc, char** argv) {
         // [doc:lesson04-main]
         const textures::MipChain chain(diffuse.image);
         zbuffer::Frame frame(width, height);
-        const std::size_t faces = textures::draw_textured(frame, mesh, chain, options);
+        const triangles::DrawCounts counts = textures::draw_textured(frame, mesh, chain, options);
         rl::save_image(output, frame.colour);
         // [/doc:lesson04-main]
         std::printf(
-            "%zu faces of %s textured with %s (%d mip levels), %s filter, %s wrap, into %s\n",
-            faces, model.c_str(),
+            "%zu faces of %s drawn, %zu culled, %zu refused; textured with %s (%d mip levels), "
+            "%s filter, %s wrap, into %s\n",
+            counts.drawn, model.c_str(), counts.culled, counts.refused,
             diffuse.is_default ? "a plain default" : diffuse.source.filename().c_str(),
             chain.levels(), textures::name(options.sampler.filter),
             textures::name(options.sampler.wrap), output.c_str());

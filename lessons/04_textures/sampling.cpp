@@ -108,11 +108,17 @@ rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) 
 
 // Texel coordinates are computed in double after reducing u to one period:
 // with `repeat`, u = 10000.3 and u = 0.3 must give the same texel, and the
-// float u itself already holds only 0.001 of precision at 10^4.
+// float u itself already holds only 0.001 of precision at 10^4. With clamp
+// and border there is no period: the coordinate is clamped in floating point
+// to two texels beyond the edges (every texel there clamps, or is border,
+// alike), so that converting it to int can never overflow (u * width passed
+// 2^31 at u = 10^7 and drew black where the edge texel belonged).
 double to_texels(float u, int size, Wrap wrap) {
     double t = static_cast<double>(u);
     if (wrap == Wrap::repeat) t -= std::floor(t);
     if (wrap == Wrap::mirror) t -= 2.0 * std::floor(t / 2.0);
+    if (wrap == Wrap::clamp || wrap == Wrap::border)
+        return std::clamp(t * size, -2.0, static_cast<double>(size) + 2.0);
     return t * size;
 }
 

@@ -14,11 +14,11 @@ UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]) {
 }
 // [/doc:affine-derivatives]
 
-std::size_t draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh, const MipChain& texture,
-                          const TexturedOptions& options) {
+triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
+                                    const MipChain& texture, const TexturedOptions& options) {
     const int width = frame.colour.width(), height = frame.colour.height();
     const rl::vec3 light{0.3f, 0.5f, 1.0f};
-    std::size_t drawn = 0;
+    triangles::DrawCounts counts;
     for (const rl::Triangle& face : mesh.triangles) {
         rl::vec3 world[3], window[3];
         rl::vec2 screen[3], uv[3];
@@ -32,26 +32,31 @@ std::size_t draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh, const Mip
                 options.uv_offset;
         }
         const triangles::Triangle2 tri{{screen[0], screen[1], screen[2]}};
-        if (triangles::signed_area2(tri) <= 0) continue;
+        if (triangles::signed_area2(tri) <= 0) {
+            ++counts.culled;
+            continue;
+        }
         const float shade =
             options.lighting
                 ? triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light)
                 : 1.0f;
         const UvDerivatives derivatives = affine_derivatives(screen, uv);
-        ++drawn;
         // [doc:textured-pixel]
-        triangles::rasterize_edge(tri, width, height, [&](int x, int y, rl::vec3 b) {
-            const float z = triangles::interpolate(b, window[0].z, window[1].z, window[2].z);
-            if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
-            const rl::vec2 at =
-                triangles::interpolate(b, uv[0], uv[1], uv[2]);  // affine: exact here
-            rl::vec4 colour = sample(texture, at, derivatives, options.sampler);
-            colour = {colour.x * shade, colour.y * shade, colour.z * shade, 1.0f};
-            frame.colour.at(x, y) = to_rgba(colour);
-        });
+        const bool drawn =
+            triangles::rasterize_edge(tri, width, height, [&](int x, int y, rl::vec3 b) {
+                const float z =
+                    zbuffer::interpolate_depth(b, window[0].z, window[1].z, window[2].z);
+                if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
+                const rl::vec2 at =
+                    triangles::interpolate(b, uv[0], uv[1], uv[2]);  // affine: exact here
+                rl::vec4 colour = sample(texture, at, derivatives, options.sampler);
+                colour = {colour.x * shade, colour.y * shade, colour.z * shade, 1.0f};
+                frame.colour.at(x, y) = to_rgba(colour);
+            });
         // [/doc:textured-pixel]
+        ++(drawn ? counts.drawn : counts.refused);
     }
-    return drawn;
+    return counts;
 }
 
 }  // namespace textures

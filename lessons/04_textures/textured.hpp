@@ -22,8 +22,9 @@ struct TexturedOptions {
 // solve uv(p) = uv0 + A (p - p0) for the 2x2 matrix A from two edges.
 UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]);
 
-// Draws the mesh into the frame; returns the number of faces drawn.
-std::size_t draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh, const MipChain& texture,
-                          const TexturedOptions& options);
+// Draws the mesh into the frame; returns how many faces were drawn, culled
+// as back faces, and refused by the rasterizer.
+triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
+                                    const MipChain& texture, const TexturedOptions& options);
 
 }  // namespace textures

@@ -113,6 +113,35 @@ TEST(MipChain, OneTexelTexturesSampleToThatTexel) {
             EXPECT_EQ(to_rgba(sample(chain, {3.7f, -12.2f}, {{0.5f, 0}, {0, 0.5f}}, state)),
                       (rl::Rgba{10, 20, 30, 255}));
         }
+    // Border: the texel at its centre, the border colour outside.
+    for (Filter f : kFilters) {
+        SamplerState state{f, Wrap::border, {0.0f, 1.0f, 0.0f, 1.0f}};
+        EXPECT_EQ(to_rgba(sample(chain, {0.5f, 0.5f}, {{0.5f, 0}, {0, 0.5f}}, state)),
+                  (rl::Rgba{10, 20, 30, 255}))
+            << name(f);
+        EXPECT_EQ(to_rgba(sample(chain, {3.7f, -12.2f}, {{0.5f, 0}, {0, 0.5f}}, state)),
+                  (rl::Rgba{0, 255, 0, 255}))
+            << name(f);
+    }
+}
+
+TEST(Sampling, ClampAndBorderHoldAtCoordinatesBeyondIntRange) {
+    // u * width passed 2^31 at u = 10^7 (a 1024-texel texture): converting it
+    // to int was undefined and drew black instead of the edge texel.
+    const MipChain chain(coordinates_texture(1024, 4));
+    for (Filter f : {Filter::nearest, Filter::bilinear}) {
+        SamplerState state{f, Wrap::clamp, {0.0f, 0.0f, 1.0f, 1.0f}};
+        for (float big : {1e7f, 3e9f, 1e30f}) {
+            // Row 0's centre (v = 1/8), so bilinear takes that row alone.
+            const rl::Rgba right = to_rgba(sample(chain, {big, 0.125f}, {}, state));
+            EXPECT_EQ(right, (rl::Rgba{255, 0, 0, 255})) << name(f) << " u=" << big;  // i = 1023
+            const rl::Rgba left = to_rgba(sample(chain, {-big, 0.125f}, {}, state));
+            EXPECT_EQ(left, (rl::Rgba{0, 0, 0, 255})) << name(f) << " u=" << -big;
+            state.wrap = Wrap::border;
+            EXPECT_EQ(to_rgba(sample(chain, {big, 0.125f}, {}, state)), (rl::Rgba{0, 0, 255, 255}));
+            state.wrap = Wrap::clamp;
+        }
+    }
 }
 
 TEST(LevelOfDetail, FollowsTheLongerSideOfTheFootprint) {

@@ -100,6 +100,21 @@ TEST(DepthFormats, ExtremeNearFarRatiosBreakStandardDepthFirst) {
 
 namespace {
 
+TEST(Bsp, SplittingIsCappedAndRefusedWithAMessage) {
+    // 3000 random triangles piercing each other once took 59 s and 9.6 GB.
+    const auto soup = random_soup(3000, 512, 4);
+    try {
+        build_bsp(soup);
+        FAIL() << "built an uncapped tree";
+    } catch (const BspTooLarge& e) {
+        EXPECT_NE(std::string(e.what()).find("--hsr zbuffer"), std::string::npos) << e.what();
+    }
+    // The lesson's own scenes stay far below the cap.
+    const BspTree tree = build_bsp(random_soup(60, 256, 9));
+    EXPECT_LE(tree.triangles, max_bsp_pieces(60));
+    EXPECT_GE(tree.triangles, 60u);
+}
+
 TEST(ZBuffer, StartsClearedToTheFarPlaneAndTestsLess) {
     // Cleared to 0 (or tested with `greater`), nothing would ever be drawn.
     const std::vector<SceneTriangle> near_far = {
@@ -109,6 +124,32 @@ TEST(ZBuffer, StartsClearedToTheFarPlaneAndTestsLess) {
     EXPECT_EQ(frame.ids.get(10, 10), 0);  // just in front of the far plane: drawn
     EXPECT_EQ(frame.ids.get(50, 20),
               -1);  // exactly at the far plane: not nearer than the clear value
+}
+
+TEST(ZBuffer, ATriangleOnTheFarPlaneWritesNoPixelAtAll) {
+    // Unclamped, float weights summing to just under 1 put about a fifth of
+    // this triangle's pixels a hair in front of the far plane. Every covered
+    // pixel is checked, not one.
+    const std::vector<SceneTriangle> far = {
+        {{{0.3f, 0.7f, 1.0f}, {250.1f, 3.9f, 1.0f}, {17.7f, 251.3f, 1.0f}}, {0, 255, 0, 255}, 0}};
+    const Frame frame = rendered(HsrMethod::zbuffer, far, 256);
+    long covered = 0;
+    triangles::rasterize_edge(screen(far[0]), 256, 256, [&](int x, int y, rl::vec3 b) {
+        ++covered;
+        EXPECT_EQ(frame.ids.get(x, y), -1) << x << "," << y;
+        EXPECT_EQ(interpolate_depth(b, 1.0f, 1.0f, 1.0f), 1.0f);
+    });
+    EXPECT_GT(covered, 25000);
+}
+
+TEST(ZBuffer, InterpolatedDepthStaysWithinTheVertexDepths) {
+    const SceneTriangle t{
+        {{1.1f, 2.3f, 0.25f}, {200.7f, 9.9f, 0.75f}, {50.5f, 230.2f, 0.5f}}, {0, 0, 0, 255}, 0};
+    triangles::rasterize_edge(screen(t), 256, 256, [&](int, int, rl::vec3 b) {
+        const float z = interpolate_depth(b, t.v[0].z, t.v[1].z, t.v[2].z);
+        EXPECT_GE(z, 0.25f);
+        EXPECT_LE(z, 0.75f);
+    });
 }
 
 }  // namespace

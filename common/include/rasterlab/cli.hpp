@@ -4,6 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +19,54 @@ struct ImageOptions {
     int width = 800;
     int height = 800;
 };
+
+// A check for a number option: a finite number in [low, high]. CLI11 names
+// the option in its message ("--far: 'inf' is not a finite number"). Every
+// float option goes through it: NaN and infinity pass CLI11's own range
+// checks, and a NaN light direction quietly drew a black image.
+inline CLI::Validator finite_number(double low = -std::numeric_limits<double>::max(),
+                                    double high = std::numeric_limits<double>::max()) {
+    return CLI::Validator(
+        [low, high](std::string& text) -> std::string {
+            double value = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, value);
+            if (error == std::errc::result_out_of_range) return "'" + text + "' is out of range";
+            if (error != std::errc{} || stop != end) return "'" + text + "' is not a number";
+            if (!std::isfinite(value)) return "'" + text + "' is not a finite number";
+            if (value < low || value > high)
+                return "'" + text + "' is outside [" + std::to_string(low) + ", " +
+                       std::to_string(high) + "]";
+            return {};
+        },
+        "FINITE");
+}
+
+// A number that must be greater than zero (a distance, a near plane).
+inline CLI::Validator positive_number() {
+    return finite_number(std::numeric_limits<double>::denorm_min());
+}
+
+// --light X Y Z: the direction towards the light, three finite numbers;
+// check_direction() refuses 0 0 0 once parsing is done.
+inline void add_light_option(CLI::App& app, std::vector<float>& light) {
+    app.add_option("--light", light, "Direction towards the light, x y z")
+        ->expected(3)
+        ->check(finite_number())
+        ->capture_default_str();
+}
+
+// Throws std::invalid_argument naming `option` unless the vector can be
+// normalised in float: not zero, and its squared length neither underflows
+// (1e-30 1e-30 1e-30) nor overflows (1e30 0 0).
+inline void check_direction(const std::string& option, const std::vector<float>& v) {
+    float length2 = 0;
+    for (float c : v) length2 += c * c;
+    if (!std::isnormal(length2))
+        throw std::invalid_argument(option +
+                                    ": needs a direction whose length squared is a normal float "
+                                    "(not zero, not below 1e-19 or above 1e19 in length)");
+}
 
 // -o/--output, --width, --height (1 to 16384).
 inline void add_image_options(CLI::App& app, ImageOptions& options) {
