@@ -27,7 +27,8 @@ namespace rl {
 class FileError : public std::runtime_error {
   public:
     FileError(const std::filesystem::path& path, const std::string& problem)
-        : std::runtime_error(path.string() + ": " + problem) {}
+        : std::runtime_error((path.empty() ? std::string("'' (an empty path)") : path.string()) +
+                             ": " + problem) {}
 };
 
 // The most any input file may hold unless a caller says otherwise: 256 MiB,

@@ -1,0 +1,57 @@
+#!/usr/bin/env python3
+"""Writes the large hostile OBJ files the robustness tests need, which are
+too big to keep in the repository:
+
+  make_hostile_obj.py soup OUT      3000 random triangles piercing each other
+                                    (once 59 s and 9.6 GB in the BSP build)
+  make_hostile_obj.py face N OUT    one convex face of N vertices (10^5 once
+                                    took 23 s in tinyobjloader's ear clipping)
+  make_hostile_obj.py big MIB OUT   a valid triangle padded with comments to
+                                    MIB mebibytes, for the OBJ size cap
+"""
+import math
+import random
+import sys
+
+
+def soup(out):
+    rng = random.Random(4)
+    with open(out, "w") as f:
+        for _ in range(3000):
+            cx, cy, cz = (rng.uniform(-0.8, 0.8) for _ in range(3))
+            for _ in range(3):
+                f.write("v %.6f %.6f %.6f\n" % (cx + rng.uniform(-0.3, 0.3),
+                                                cy + rng.uniform(-0.3, 0.3),
+                                                cz + rng.uniform(-0.3, 0.3)))
+        for i in range(3000):
+            # Wound both ways, so that back-face culling keeps about half.
+            a, b, c = 3 * i + 1, 3 * i + 2, 3 * i + 3
+            f.write("f %d %d %d\n" % ((a, b, c) if i % 2 else (a, c, b)))
+
+
+def face(n, out):
+    with open(out, "w") as f:
+        for i in range(n):
+            angle = 2 * math.pi * i / n
+            f.write("v %.7f %.7f 0\n" % (0.9 * math.cos(angle), 0.9 * math.sin(angle)))
+        f.write("f " + " ".join(str(i + 1) for i in range(n)) + "\n")
+
+
+def big(mib, out):
+    with open(out, "w") as f:
+        f.write("v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0\nf 1 2 3\n")
+        line = "#" * 1023 + "\n"
+        for _ in range(mib * 1024):
+            f.write(line)
+
+
+if __name__ == "__main__":
+    kind = sys.argv[1]
+    if kind == "soup":
+        soup(sys.argv[2])
+    elif kind == "face":
+        face(int(sys.argv[2]), sys.argv[3])
+    elif kind == "big":
+        big(int(sys.argv[2]), sys.argv[3])
+    else:
+        sys.exit("unknown kind " + kind)
