@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs, with apt-get, every Debian package rasterlab builds with that is
 # not installed yet. Safe to run again: it does nothing when all are there.
+# `scripts/setup.sh fuzz` adds clang 14 and libFuzzer for scripts/fuzz.sh.
 set -euo pipefail
 
 packages=(
@@ -12,6 +13,10 @@ packages=(
   libgtest-dev                              # unit tests
   libbenchmark-dev                          # the labs' timing
 )
+
+if [ "${1:-}" = "fuzz" ]; then
+  packages+=(clang-14 libfuzzer-14-dev libclang-rt-14-dev)  # the fuzz targets
+fi
 
 missing=()
 for package in "${packages[@]}"; do

@@ -20,9 +20,23 @@ std::string lower_extension(const std::filesystem::path& path) {
     return ext;
 }
 
+bool is_png_jpeg_or_bmp(std::span<const std::uint8_t> bytes) {
+    auto starts_with = [&](std::initializer_list<std::uint8_t> signature) {
+        return bytes.size() >= signature.size() &&
+               std::equal(signature.begin(), signature.end(), bytes.begin());
+    };
+    return starts_with({0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'}) ||
+           starts_with({0xff, 0xd8, 0xff}) || starts_with({'B', 'M'});
+}
+
 Image load_with_stb(const std::filesystem::path& path) {
     const std::vector<std::uint8_t> bytes = read_file(path);
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw FileError(path, "file too large");
+    // stb_image reads a dozen formats; rasterlab's textures come as PNG, JPEG
+    // or BMP (and TGA, read by our own codec). The others (PSD, GIF, HDR, PIC,
+    // PNM) are refused by their signature before stb sees them: less decoder
+    // code reachable from a hostile file.
+    if (!is_png_jpeg_or_bmp(bytes)) throw FileError(path, "not a PNG, JPEG, BMP or TGA file");
     int width = 0, height = 0, channels = 0;
     if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                                &channels))

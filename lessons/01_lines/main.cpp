@@ -18,7 +18,9 @@ int main(int argc, char** argv) {
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--method", method, lines::kLineMethods, "Line algorithm");
     CLI11_PARSE(app, argc, argv);
-    const auto& [output, width, height] = image_options;
+    // Not a structured binding: clang before 16 cannot capture one in a lambda.
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
 
     return rl::guarded_main("01_lines", [&] {
         rl::check_image_output(output);  // before any work: a bad path costs nothing

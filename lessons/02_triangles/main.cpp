@@ -27,7 +27,9 @@ int main(int argc, char** argv) {
         "Draw a fan of 12 triangles sharing a hub (48x48) coloured by how often each pixel "
         "is drawn: grey once, red twice or more");
     CLI11_PARSE(app, argc, argv);
-    const auto& [output, width, height] = image_options;
+    // Not a structured binding: clang before 16 cannot capture one in a lambda.
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
 
     return rl::guarded_main("02_triangles", [&] {
         rl::check_image_output(output);  // before any work: a bad path costs nothing

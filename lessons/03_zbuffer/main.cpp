@@ -52,7 +52,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     zfight->add_flag("--fitted", fitted, "Fit near and far to the planes instead");
     CLI11_PARSE(app, argc, argv);
-    const auto& [output, width, height] = image_options;
+    // Not a structured binding: clang before 16 cannot capture one in a lambda.
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
     const bool model_given = model_option->count() > 0;  // even as --model '': no such file
 
     return rl::guarded_main("03_zbuffer", [&] {

@@ -37,7 +37,9 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     app.add_flag("--no-light", no_light, "Texture colour only, no Lambert shading");
     CLI11_PARSE(app, argc, argv);
-    const auto& [output, width, height] = image_options;
+    // Not a structured binding: clang before 16 cannot capture one in a lambda.
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
 
     return rl::guarded_main("04_textures", [&] {
         rl::check_image_output(output);  // before any work: a bad path costs nothing

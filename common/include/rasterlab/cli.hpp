@@ -20,12 +20,13 @@ struct ImageOptions {
     int height = 800;
 };
 
-// A check for a number option: a finite number in [low, high]. CLI11 names
+// A check for a number option: a finite number in [low, high], by default
+// the range of a float (1e300 would become infinity in one). CLI11 names
 // the option in its message ("--far: 'inf' is not a finite number"). Every
 // float option goes through it: NaN and infinity pass CLI11's own range
 // checks, and a NaN light direction quietly drew a black image.
-inline CLI::Validator finite_number(double low = -std::numeric_limits<double>::max(),
-                                    double high = std::numeric_limits<double>::max()) {
+inline CLI::Validator finite_number(double low = -std::numeric_limits<float>::max(),
+                                    double high = std::numeric_limits<float>::max()) {
     return CLI::Validator(
         [low, high](std::string& text) -> std::string {
             double value = 0;

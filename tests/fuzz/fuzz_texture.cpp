@@ -1,0 +1,37 @@
+// libFuzzer target: loading a texture file as the lessons do, by extension:
+// .tga through our codec, PNG/JPEG/BMP through stb_image. The first input
+// byte picks the extension; the rest is the file. It is refused with a
+// FileError or loaded into a non-empty image.
+// Run: build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "rasterlab/image_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size == 0) return 0;
+    static const char* const extensions[] = {".tga", ".png", ".jpg", ".bmp"};
+    static const std::filesystem::path folder = [] {
+        auto dir = std::filesystem::temp_directory_path() /
+                   ("rasterlab-fuzz-texture-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir);
+        return dir;
+    }();
+    const std::filesystem::path path = folder / (std::string("texture") + extensions[data[0] % 4]);
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
+    }
+    try {
+        const rl::Image image = rl::load_image(path);
+        if (image.width() <= 0 || image.height() <= 0) std::abort();
+    } catch (const rl::FileError&) {
+    }
+    std::filesystem::remove(path);
+    return 0;
+}
