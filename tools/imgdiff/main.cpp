@@ -1,6 +1,6 @@
 // imgdiff: compares two images and says whether they agree within the given
 // tolerances. Exit code 0: within tolerance; 1: not; 2: could not compare.
-#include <CLI/CLI.hpp>
+#include "rasterlab/cli.hpp"
 
 #include <cstdio>
 #include <iostream>
@@ -27,9 +27,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 255));
     app.add_option("--max-share", max_share, "Share of differing pixels allowed (0..1)")
         ->capture_default_str()
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(rl::finite_number(0.0, 1.0));  // CLI::Range lets NaN through
     app.add_option("--min-psnr", min_psnr, "Smallest PSNR allowed in dB (0 = no limit)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->check(rl::finite_number(0.0, 1000.0));
     app.add_option("--diff", diff_path, "Where to write a difference image when the check fails");
     CLI11_PARSE(app, argc, argv);
 
