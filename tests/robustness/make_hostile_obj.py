@@ -8,6 +8,9 @@ too big to keep in the repository:
                                     took 23 s in tinyobjloader's ear clipping)
   make_hostile_obj.py big MIB OUT   a valid triangle padded with comments to
                                     MIB mebibytes, for the OBJ size cap
+  make_hostile_obj.py rle_texture   huge_rle.obj/.mtl/.tga in the current folder:
+                                    a triangle whose texture is a valid 16384^2
+                                    RLE TGA of 10 MiB that decodes to 1 GiB
 """
 import math
 import random
@@ -45,6 +48,20 @@ def big(mib, out):
             f.write(line)
 
 
+def rle_texture():
+    width = height = 16384
+    with open("huge_rle.tga", "wb") as f:
+        f.write(bytes([0, 0, 10, 0, 0, 0, 0, 0, 0, 0, 0, 0]))
+        f.write(width.to_bytes(2, "little") + height.to_bytes(2, "little") + bytes([32, 0]))
+        # Run packets of 128 grey pixels: (width * height / 128) of them.
+        f.write(bytes([0xFF, 128, 128, 128, 255]) * (width * height // 128))
+    with open("huge_rle.mtl", "w") as f:
+        f.write("newmtl huge\nmap_Kd huge_rle.tga\n")
+    with open("huge_rle.obj", "w") as f:
+        f.write("mtllib huge_rle.mtl\nv -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0\n"
+                "vt 0 0\nvt 1 0\nvt 0.5 1\nusemtl huge\nf 1/1 2/2 3/3\n")
+
+
 if __name__ == "__main__":
     kind = sys.argv[1]
     if kind == "soup":
@@ -53,5 +70,7 @@ if __name__ == "__main__":
         face(int(sys.argv[2]), sys.argv[3])
     elif kind == "big":
         big(int(sys.argv[2]), sys.argv[3])
+    elif kind == "rle_texture":
+        rle_texture()
     else:
         sys.exit("unknown kind " + kind)

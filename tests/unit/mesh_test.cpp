@@ -275,6 +275,29 @@ TEST(Textures, MissingOrBrokenTexturesWarnAndFallBack) {
     EXPECT_NE(warnings[2].find("no nm_tangent texture"), std::string::npos) << warnings[2];
 }
 
+TEST(Textures, OtherFormatsThanPngJpegBmpAndTgaAreRefused) {
+    // stb_image would decode these; rasterlab keeps its decoders out of reach.
+    rl_test::TempDir dir;
+    const std::pair<const char*, const char*> others[] = {
+        {"a.gif", "GIF89a\x01\x00\x01\x00\x00\x00\x00;"},
+        {"a.psd", "8BPS\x00\x01"},
+        {"a.hdr", "#?RADIANCE\n"},
+        {"a.ppm", "P6\n1 1\n255\n\x01\x02\x03"}};
+    for (const auto& [name, bytes] : others) {
+        rl_test::write_text(dir.path() / name, bytes);
+        try {
+            rl::load_image(dir.path() / name);
+            ADD_FAILURE() << name << " was decoded";
+        } catch (const rl::FileError& e) {
+            EXPECT_NE(std::string(e.what()).find("not a PNG, JPEG, BMP or TGA file"),
+                      std::string::npos)
+                << e.what();
+        }
+    }
+    rl::save_image(dir.path() / "fine.png", rl::Image(2, 2, rl::Rgba{1, 2, 3, 255}));
+    EXPECT_EQ(rl::load_image(dir.path() / "fine.png").get(1, 1), (rl::Rgba{1, 2, 3, 255}));
+}
+
 TEST(Textures, DevicesFifosAndHugeFilesFallBackWithAWarning) {
     rl_test::TempDir dir;
     ASSERT_EQ(::mkfifo((dir.path() / "pipe.png").c_str(), 0600), 0);
