@@ -51,8 +51,10 @@ std::atomic<bool> g_pending_used[kMaxPending];
 extern "C" void remove_pending_and_reraise(int signal_number) {
     for (int i = 0; i < kMaxPending; ++i)
         if (g_pending_used[i].load()) ::unlink(g_pending[i]);
-    std::signal(signal_number, SIG_DFL);
-    std::raise(signal_number);
+    struct sigaction default_action {};
+    default_action.sa_handler = SIG_DFL;
+    sigaction(signal_number, &default_action, nullptr);
+    ::raise(signal_number);
 }
 
 void install_cleanup_handlers() {
@@ -60,24 +62,30 @@ void install_cleanup_handlers() {
         for (int s : {SIGINT, SIGTERM, SIGHUP}) {
             struct sigaction current {};
             sigaction(s, nullptr, &current);
-            if (current.sa_handler == SIG_DFL) std::signal(s, remove_pending_and_reraise);
+            if (current.sa_handler != SIG_DFL) continue;  // the program has its own plan
+            struct sigaction cleanup {};
+            cleanup.sa_handler = remove_pending_and_reraise;
+            sigemptyset(&cleanup.sa_mask);
+            sigaction(s, &cleanup, nullptr);
         }
         return true;
     }();
     (void)installed;
 }
 
-int register_pending(const std::filesystem::path& temporary) {
+// Remembers a temporary for the signal handler. Beyond kMaxPending at once
+// (no program here stages more than three) it is still removed on an error,
+// only not on a signal.
+void register_pending(const std::filesystem::path& temporary) {
     install_cleanup_handlers();
     const std::string& text = temporary.native();
-    if (text.size() >= PATH_MAX) return -1;
+    if (text.size() >= PATH_MAX) return;
     for (int i = 0; i < kMaxPending; ++i) {
         if (g_pending_used[i].load()) continue;
         std::memcpy(g_pending[i], text.c_str(), text.size() + 1);
         g_pending_used[i].store(true);
-        return i;
+        return;
     }
-    return -1;  // more than kMaxPending at once: still removed on error, not on a signal
 }
 
 void unregister_pending(const std::filesystem::path& temporary) {
