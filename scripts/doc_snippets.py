@@ -21,12 +21,27 @@ A page can also include a generated file verbatim (the labs' tables):
     ...the file's text...
     <!-- /include -->
 
---check (the default) fails when a page's copy is stale or names a region
-that does not exist; --fill rewrites the pages' copies from the sources.
+A measured number in prose is a marked value, taken from a lab's table in
+docs/charts/ by the row whose columns have the given values:
+
+    ... takes <!-- value: docs/charts/02_triangles.md | method=edge |
+    scene=small (10 px) | ns_per_triangle -->224<!-- /value --> ns ...
+
+(on one line; an optional last part `fmt=.1f` formats the number with
+Python's format spec, e.g. `fmt=.0f`, `fmt=,.0f`, `fmt=.1%` for a share).
+
+--check (the default) fails when a page's copy or value is stale, names a
+region, table, row or column that does not exist, or when a marked source
+region is shown by no page. With --tests-from BUILD_DIR it also checks that
+every test a page names where it says *Test:* (the pitfalls), and every test
+in docs/robustness.md's case tables, exists in that build's CTest list.
+--fill rewrites the pages' copies and values from the sources.
 """
 import argparse
+import os
 import pathlib
 import re
+import subprocess
 import sys
 import textwrap
 
@@ -41,6 +56,9 @@ SNIPPET = re.compile(
 INCLUDE = re.compile(
     r"(<!-- include: (?P<file>\S+) -->\n)(?P<body>.*?)(<!-- /include -->)",
     re.S,
+)
+VALUE = re.compile(
+    r"<!-- value: (?P<spec>[^>]*?) -->(?P<body>[^<]*)<!-- /value -->",
 )
 LANGUAGES = {".cpp": "cpp", ".hpp": "cpp", ".cmake": "cmake", ".py": "python", ".sh": "bash"}
 
@@ -77,37 +95,142 @@ def included(match: re.Match) -> str:
     return f"{match.group(1)}{source.read_text()}{match.group(4)}"
 
 
+def table_rows(path: pathlib.Path) -> list:
+    """The rows of the first Markdown table in a file, as dicts by column."""
+    rows, header = [], None
+    for line in path.read_text().splitlines():
+        if not line.startswith("|"):
+            if header:
+                break
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if header is None:
+            header = cells
+        elif not set(line) <= set("|-: "):
+            rows.append(dict(zip(header, cells)))
+    return rows
+
+
+def value(match: re.Match) -> str:
+    parts = [p.strip() for p in match.group("spec").split("|")]
+    table, *conditions, column = parts
+    fmt = None
+    if column.startswith("fmt="):
+        fmt, column = column[4:], conditions.pop()
+    source = ROOT / table
+    if not source.is_file():
+        raise LookupError(f"no table {table} for a value")
+    wanted = dict(c.split("=", 1) for c in conditions)
+    rows = [r for r in table_rows(source) if all(r.get(k) == v for k, v in wanted.items())]
+    if len(rows) != 1:
+        raise LookupError(f"{len(rows)} rows of {table} match {wanted} (need exactly one)")
+    if column not in rows[0]:
+        raise LookupError(f"{table} has no column {column}")
+    text = rows[0][column]
+    if fmt:
+        text = format(float(text), fmt)
+    return f"<!-- value: {match.group('spec')} -->{text}<!-- /value -->"
+
+
+def source_regions() -> set:
+    """Every (file, region) marked in the sources (build folders and this
+    script, whose docstring shows a marker, left out)."""
+    found = set()
+    for folder, subfolders, files in os.walk(ROOT):
+        subfolders[:] = [d for d in subfolders if not d.startswith(("build", "."))]
+        for name in files:
+            path = pathlib.Path(folder) / name
+            if path.suffix not in LANGUAGES or path.resolve() == pathlib.Path(__file__).resolve():
+                continue
+            for line in path.read_text(errors="replace").splitlines():
+                match = MARKER.match(line)
+                if match and match.group(1) == "":
+                    found.add((str(path.relative_to(ROOT)), match.group(2)))
+    return found
+
+
+def ctest_names(build_dir: pathlib.Path) -> list:
+    listing = subprocess.run(["ctest", "--test-dir", str(build_dir), "-N"], capture_output=True,
+                             text=True, check=True).stdout
+    return [m.group(1) for m in re.finditer(r"Test +#\d+: (\S+)", listing)]
+
+
+def test_pattern(name: str) -> re.Pattern:
+    """`<lesson>` and `<method>` stand for any lesson or method, `*` for anything."""
+    regex = re.escape(name)
+    regex = regex.replace(re.escape("<lesson>"), r"[0-9a-z_]+")
+    regex = regex.replace(re.escape("<method>"), r"[a-z]+")
+    return re.compile(regex.replace(re.escape("*"), r".*"))
+
+
+def named_tests(page: pathlib.Path, text: str) -> list:
+    """(where, [names]) for every pitfall that says *Test:*, and for every row
+    of robustness.md's case tables (their last cell names the tests)."""
+    found = []
+    for bullet in re.findall(r"^> - \*\*(.*?)(?=^> - \*\*|^(?!>))", text, re.S | re.M):
+        title = bullet.split("**")[0]
+        if "*Test:*" not in bullet:
+            found.append((f"pitfall '{title}'", []))
+            continue
+        found.append((f"pitfall '{title}'",
+                      re.findall(r"`([^`]+)`", bullet.split("*Test:*", 1)[1])))
+    if page.name == "robustness.md" and "## Every case tried" in text:
+        section = text.split("## Every case tried", 1)[1].split("### Fuzzing", 1)[0]
+        for line in section.splitlines():
+            if not line.startswith("|") or set(line) <= set("|-: "):
+                continue
+            cell = line.strip().strip("|").split("|")[-1].strip()
+            if cell != "test":
+                found.append((f"row '{line[:60]}'", re.findall(r"`([^`]+)`", cell)))
+    return found
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     mode = parser.add_mutually_exclusive_group()
     mode.add_argument("--check", action="store_true", help="fail on stale snippets (default)")
     mode.add_argument("--fill", action="store_true", help="rewrite snippets from the sources")
     parser.add_argument("--root", type=pathlib.Path, help="project root (default: this checkout)")
+    parser.add_argument("--tests-from", type=pathlib.Path, metavar="BUILD_DIR",
+                        help="check the tests the pages name against this build's CTest list")
     options = parser.parse_args()
     global ROOT
     if options.root:
         ROOT = options.root.resolve()
 
-    problems, count = [], 0
+    problems, count, values, used = [], 0, 0, set()
+    tests = ctest_names(options.tests_from) if options.tests_from else None
     for page in sorted((ROOT / "docs").glob("*.md")):
         text = page.read_text()
+        used.update((m.group("file"), m.group("region")) for m in SNIPPET.finditer(text))
+        if tests is not None:
+            for where, names in named_tests(page, text):
+                if not names:
+                    problems.append(f"{page.relative_to(ROOT)}: {where} names no test")
+                for name in names:
+                    if not any(test_pattern(name).search(t) for t in tests):
+                        problems.append(f"{page.relative_to(ROOT)}: {where}: no test {name}")
         try:
-            updated = INCLUDE.sub(included, SNIPPET.sub(rendered, text))
-        except LookupError as error:
+            updated = VALUE.sub(value, INCLUDE.sub(included, SNIPPET.sub(rendered, text)))
+        except (LookupError, ValueError) as error:
             problems.append(f"{page.relative_to(ROOT)}: {error}")
             continue
         count += len(SNIPPET.findall(text)) + len(INCLUDE.findall(text))
+        values += len(VALUE.findall(text))
         if updated != text:
             if options.fill:
                 page.write_text(updated)
                 print(f"filled {page.relative_to(ROOT)}")
             else:
-                problems.append(f"{page.relative_to(ROOT)}: code differs from its source region")
+                problems.append(f"{page.relative_to(ROOT)}: code or a value differs from its source")
+    for file, region in sorted(source_regions() - used):
+        problems.append(f"{file}: region [doc:{region}] is shown by no page")
     for problem in problems:
         print(problem, file=sys.stderr)
     if problems and not options.fill:
         print("run scripts/doc_snippets.py --fill to update the pages", file=sys.stderr)
-    print(f"{count} snippets checked")
+    print(f"{count} snippets and {values} values checked" +
+          (f"; named tests checked against {len(tests)}" if tests is not None else ""))
     return 1 if problems else 0
 
 

@@ -25,4 +25,24 @@ with tempfile.TemporaryDirectory() as tmp:
     assert run(root) == 0, "a filled snippet failed the check"
     page.write_text("<!-- snippet: src.cpp#gone -->\n<!-- /snippet -->\n")
     assert run(root) == 1, "a missing region passed the check"
+
+    # A region no page shows fails the check.
+    page.write_text("no snippets here\n")
+    assert run(root) == 1, "an unused region passed the check"
+
+    # Values come from a table's row; a stale one fails, --fill mends it.
+    (root / "docs" / "charts").mkdir()
+    (root / "docs" / "charts" / "t.md").write_text(
+        "| method | scene | ns |\n|---|---|---|\n| a | big (1 px) | 12.5 |\n| b | big (1 px) | 99 |\n")
+    shown = "<!-- snippet: src.cpp#part -->\n```cpp\nint b = 1;\n```\n<!-- /snippet -->\n"
+    stale = "takes <!-- value: docs/charts/t.md | method=a | scene=big (1 px) | ns -->11<!-- /value --> ns\n"
+    page.write_text(shown + stale)
+    assert run(root) == 1, "a stale value passed the check"
+    assert run(root, "--fill") == 0
+    assert "-->12.5<!--" in page.read_text(), page.read_text()
+    assert run(root) == 0, "a filled value failed the check"
+    page.write_text(shown + stale.replace("| ns -->", "| ns | fmt=.0f -->"))
+    assert run(root, "--fill") == 0 and "-->12<!--" in page.read_text(), page.read_text()
+    page.write_text(shown + stale.replace("method=a", "method=c"))
+    assert run(root) == 1, "a value from no row passed the check"
 print("doc_snippets self-test: ok")

@@ -8,6 +8,7 @@
 
 #include "draw_line.hpp"
 #include "line_measure.hpp"
+#include "wireframe.hpp"
 
 namespace {
 
@@ -124,6 +125,24 @@ TEST(LineWeaknesses, WuPutsInkWhereTheExactLineIs) {
         lines::score_segment(LineMethod::bresenham, s, 128, 128, bresenham);
     }
     EXPECT_LT(wu.coverage_error_per_length(), 0.5 * bresenham.coverage_error_per_length());
+}
+
+// The pitfall "blending twice": Wu lines blend, so an edge drawn once for
+// each of its two triangles would come out darker than the rest.
+TEST(Wireframe, SharedEdgesAreDrawnOnceSoWuInkIsNotDoubled) {
+    const rl::Mesh square = rl::parse_obj(
+        "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n", "",
+        "square.obj");
+    rl::Image once(64, 64, rl::Rgba{0, 0, 0, 255});
+    EXPECT_EQ(lines::draw_wireframe(once, square, {200, 200, 200, 255}, LineMethod::wu), 5u);
+    // The same two triangles, each listed twice: still five edges, the same image.
+    const rl::Mesh doubled = rl::parse_obj(
+        "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\nf 3 1 "
+        "2\nf 4 1 3\n",
+        "", "doubled.obj");
+    rl::Image again(64, 64, rl::Rgba{0, 0, 0, 255});
+    EXPECT_EQ(lines::draw_wireframe(again, doubled, {200, 200, 200, 255}, LineMethod::wu), 5u);
+    EXPECT_EQ(again, once);
 }
 
 TEST(LineClip, LiangBarskyMeetsTheRectangleEdges) {
