@@ -27,8 +27,9 @@ docs/charts/ by the row whose columns have the given values:
     ... takes <!-- value: docs/charts/02_triangles.md | method=edge |
     scene=small (10 px) | ns_per_triangle -->224<!-- /value --> ns ...
 
-(on one line; an optional last part `fmt=.1f` formats the number with
-Python's format spec, e.g. `fmt=.0f`, `fmt=,.0f`, `fmt=.1%` for a share).
+(on one line). Optional last parts: `x=100` multiplies the number (per
+million to per cent: `x=0.0001`), `fmt=.1f` formats it with Python's format
+spec (`fmt=.0f`, `fmt=,.0f`, `fmt=.2g`).
 
 --check (the default) fails when a page's copy or value is stale, names a
 region, table, row or column that does not exist, or when a marked source
@@ -113,10 +114,11 @@ def table_rows(path: pathlib.Path) -> list:
 
 def value(match: re.Match) -> str:
     parts = [p.strip() for p in match.group("spec").split("|")]
+    options = {}
+    while parts and parts[-1].split("=", 1)[0] in ("fmt", "x"):
+        key, text = parts.pop().split("=", 1)
+        options[key] = text
     table, *conditions, column = parts
-    fmt = None
-    if column.startswith("fmt="):
-        fmt, column = column[4:], conditions.pop()
     source = ROOT / table
     if not source.is_file():
         raise LookupError(f"no table {table} for a value")
@@ -127,8 +129,9 @@ def value(match: re.Match) -> str:
     if column not in rows[0]:
         raise LookupError(f"{table} has no column {column}")
     text = rows[0][column]
-    if fmt:
-        text = format(float(text), fmt)
+    if options:
+        number = float(text) * float(options.get("x", "1"))
+        text = format(number, options.get("fmt", "g"))
     return f"<!-- value: {match.group('spec')} -->{text}<!-- /value -->"
 
 

@@ -3,7 +3,11 @@
 
 One point per row of the lab's CSV, labelled by --label, coloured by --group
 if given. The best trade-offs are marked: the points that no other point beats
-on both time and error (the Pareto front), joined by a dashed line.
+(the Pareto front), joined by a dashed line. Timings on a shared two-core
+machine move by several per cent from run to run, so a time within
+TIME_NOISE (10%) of another counts as a tie: a point is beaten only by one that
+is as accurate and more than 10% faster, or more accurate and not more than
+10% slower. A lead inside the noise is not a best trade-off.
 """
 import argparse
 import csv
@@ -19,13 +23,21 @@ def number(text):
         return None
 
 
+TIME_NOISE = 0.10
+
+
 def pareto_front(points):
-    """Indices of the points not dominated in (x, y), both smaller-is-better."""
+    """Indices of the points not dominated in (x = time, y = error), both
+    smaller-is-better, with times within TIME_NOISE of each other tied."""
+    def beats(j, i):
+        (xj, yj), (xi, yi) = points[j], points[i]
+        clearly_faster = xj * (1 + TIME_NOISE) < xi
+        not_slower = xj <= xi * (1 + TIME_NOISE)
+        return (yj <= yi and clearly_faster) or (yj < yi and not_slower)
+
     front = []
-    for i, (xi, yi) in enumerate(points):
-        dominated = any(
-            (xj <= xi and yj <= yi) and (xj < xi or yj < yi) for j, (xj, yj) in enumerate(points) if j != i
-        )
+    for i in range(len(points)):
+        dominated = any(beats(j, i) for j in range(len(points)) if j != i)
         if not dominated:
             front.append(i)
     return sorted(front, key=lambda i: points[i][0])
@@ -55,9 +67,63 @@ def row_key(row, label):
     return tuple(row[c] for c in label)
 
 
-def finish(figure, axes, options, rows):
+def plain_log_ticks(axis, low, high):
+    """Ticks labelled as plain numbers (200, 5000) instead of 10^3: at 1, 2 and 5
+    times the powers of ten over up to three decades, at the powers alone beyond."""
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    decades = math.log10(max(high, 1e-300) / max(low, 1e-300))
+    axis.set_major_locator(LogLocator(base=10, subs=(1.0, 2.0, 5.0) if decades <= 3 else (1.0,)))
+    axis.set_major_formatter(FuncFormatter(lambda value, _: f"{value:g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
+def spread_labels(figure, axes, labels, points):
+    """Moves each point label to the first of a few offsets where it overlaps
+    no label placed before it, no point and stays inside the axes."""
+    figure.canvas.draw()
+    renderer = figure.canvas.get_renderer()
+    inside = axes.get_window_extent(renderer)
+    marks = [axes.transData.transform(p) for p in points]
+    mark_boxes = [(x - 5, y - 5, x + 5, y + 5) for x, y in marks]
+    placed = []
+    candidates = [(6, 4, "left"), (6, -12, "left"), (-6, 4, "right"), (-6, -12, "right"),
+                  (6, 16, "left"), (-6, 16, "right"), (6, -24, "left"), (-6, -24, "right"),
+                  (0, 28, "center"), (0, -36, "center")]
+
+    def overlaps(a, b):
+        return not (a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1])
+
+    for label in labels:
+        best, best_score = None, None
+        for dx, dy, align in candidates:
+            label.set_position((dx, dy))
+            label.set_horizontalalignment(align)
+            extent = label.get_window_extent(renderer)
+            box = (extent.x0, extent.y0, extent.x1, extent.y1)
+            score = sum(overlaps(box, other) for other in placed + mark_boxes)
+            if box[0] < inside.x0 or box[2] > inside.x1 or box[1] < inside.y0 or box[3] > inside.y1:
+                score += 0.5
+            if best_score is None or score < best_score:
+                best, best_score = (dx, dy, align, box), score
+            if score == 0:
+                break
+        dx, dy, align, box = best
+        label.set_position((dx, dy))
+        label.set_horizontalalignment(align)
+        placed.append(box)
+
+
+def finish(figure, axes, options, rows, before_save=None):
     if options.logx:
         axes.set_xscale("log")
+        xs = [number(r[options.x]) for r in rows if number(r[options.x])]
+        plain_log_ticks(axes.xaxis, min(xs), max(xs))
+    if options.xticks_at_data:
+        values = sorted({number(r[options.x]) for r in rows})
+        axes.set_xticks(values)
+        axes.set_xticklabels([f"{v:g}" for v in values])
+        axes.minorticks_off()
     if options.logy:
         ys = [number(r[options.y]) for r in rows]
         positive = [y for y in ys if y and y > 0]
@@ -68,10 +134,13 @@ def finish(figure, axes, options, rows):
             axes.set_ylim(bottom=0, top=max(positive, default=1.0) * 5)
         else:
             axes.set_yscale("log")
+            plain_log_ticks(axes.yaxis, min(positive), max(positive))
     axes.set_xlabel(options.xlabel or options.x)
     axes.set_ylabel(options.ylabel or options.y)
     axes.grid(True, which="both", alpha=0.3)
     figure.tight_layout()
+    if before_save:
+        before_save()
     options.svg.parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(options.svg, metadata={"Date": None})
     print(f"wrote {options.svg}")
@@ -82,16 +151,23 @@ def draw_lines(plt, rows, options):
     figure, axes = plt.subplots(figsize=(7.5, 5))
     series = list(dict.fromkeys(r[options.series] for r in rows))
     styles = list(dict.fromkeys(r[options.style] for r in rows)) if options.style else [None]
-    dashes = ["-", "--", ":", "-."]
+    dashes = ["-", (0, (6, 3)), ":", "-."]
+    flat = []  # lines that are zero everywhere: named in a note, not drawn on top of each other
     for i, name in enumerate(series):
         for j, style in enumerate(styles):
             members = [r for r in rows if r[options.series] == name and (style is None or r[options.style] == style)]
             points = sorted((number(r[options.x]), number(r[options.y])) for r in members)
             label = name if style is None else f"{name}, {style}"
-            axes.plot([p[0] for p in points], [p[1] for p in points], dashes[j % len(dashes)], color=f"C{i}",
-                      marker="o", markersize=3, label=label)
+            if points and all(p[1] == 0 for p in points):
+                flat.append(label)
+                continue
+            axes.plot([p[0] for p in points], [p[1] for p in points], linestyle=dashes[j % len(dashes)],
+                      color=f"C{i}", marker="o", markersize=3, label=label)
     axes.set_title(options.title, fontsize=10)
-    axes.legend(fontsize=7, ncol=2)
+    axes.legend(fontsize=7, ncol=2, handlelength=4)  # long enough handles to show the dashes
+    if flat:
+        axes.text(0.01, 0.99, "zero everywhere (not drawn):\n" + "\n".join(flat), transform=axes.transAxes,
+                  fontsize=6.5, va="top", ha="left", color="0.3")
     finish(figure, axes, options, rows)
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())
@@ -119,6 +195,8 @@ def main():
     parser.add_argument("--svg", type=pathlib.Path, required=True)
     parser.add_argument("--table", type=pathlib.Path, help="Markdown table of the CSV")
     parser.add_argument("--columns", help="columns of the table (default: all)")
+    parser.add_argument("--xticks-at-data", action="store_true",
+                        help="one x tick at each value the data has (sizes, distances)")
     options = parser.parse_args()
 
     import matplotlib
@@ -145,27 +223,29 @@ def main():
     for row in rows:
         groups.setdefault(row[options.group] if options.group else "", []).append(row)
 
-    figure, axes = plt.subplots(figsize=(7.5, 5))
+    figure, axes = plt.subplots(figsize=(8.5, 5))
     front_labels = set()
+    labels, all_points = [], []
     for index, (group, members) in enumerate(groups.items()):
         colour = f"C{index}"
         points = [(number(r[options.x]), number(r[options.y])) for r in members]
         axes.scatter([p[0] for p in points], [p[1] for p in points], color=colour, s=36, zorder=3,
                      label=f"{options.group} {group}" if options.group else None)
         for row, (x, y) in zip(members, points):
-            axes.annotate(" ".join(row[c] for c in label if c != options.group), (x, y),
-                          textcoords="offset points", xytext=(6, 4), fontsize=8)
+            labels.append(axes.annotate(" ".join(row[c] for c in label if c != options.group), (x, y),
+                                        textcoords="offset points", xytext=(6, 4), fontsize=8))
+            all_points.append((x, y))
         front = pareto_front(points)
         front_labels.update(row_key(members[i], label) for i in front)
         axes.plot([points[i][0] for i in front], [points[i][1] for i in front], linestyle="--",
                   color=colour, linewidth=1, zorder=2)
         axes.scatter([points[i][0] for i in front], [points[i][1] for i in front], s=140,
                      facecolors="none", edgecolors=colour, linewidths=1.5, zorder=4)
-    axes.set_title(options.title + "\n(circled: best trade-offs — nothing is both faster and more accurate)",
+    axes.set_title(options.title + "\n(circled: best trade-offs; times within 10% count as ties)",
                    fontsize=10)
-    if options.group:
-        axes.legend(fontsize=8)
-    finish(figure, axes, options, rows)
+    if options.group:  # beside the plot, where it cannot cover a point or a label
+        axes.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
+    finish(figure, axes, options, rows, lambda: spread_labels(figure, axes, labels, all_points))
 
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())

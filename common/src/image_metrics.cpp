@@ -66,4 +66,17 @@ Image difference_image(const Image& a, const Image& b, int threshold) {
     return out;
 }
 
+Image difference_overlay(const Image& expected, const Image& actual, int threshold) {
+    require_same_size(expected, actual);
+    Image out(actual.width(), actual.height());
+    for (int y = 0; y < actual.height(); ++y)
+        for (int x = 0; x < actual.width(); ++x) {
+            const Rgba a = actual.get(x, y);
+            const bool wrong = largest_channel_difference(expected.get(x, y), a) > threshold;
+            const auto dim = [](std::uint8_t c) { return static_cast<std::uint8_t>(c / 3); };
+            out.set(x, y, wrong ? Rgba{255, 0, 255, 255} : Rgba{dim(a.r), dim(a.g), dim(a.b), 255});
+        }
+    return out;
+}
+
 }  // namespace rl

@@ -27,6 +27,19 @@ std::vector<Segment> random_segments(int count, int size, std::uint64_t seed) {
     return segments;
 }
 
+std::vector<Segment> moved_segments(std::vector<Segment> segments, int size, double spread,
+                                    std::uint64_t seed) {
+    rl::SplitMix64 random(seed);
+    const double centre = 0.5 * size;
+    auto move = [&](rl::vec2 p) {
+        const double x = p.x + random.uniform(-0.49, 0.49), y = p.y + random.uniform(-0.49, 0.49);
+        return rl::vec2{static_cast<float>(centre + (x - centre) * spread),
+                        static_cast<float>(centre + (y - centre) * spread)};
+    };
+    for (Segment& s : segments) s = {move(s.a), move(s.b)};
+    return segments;
+}
+
 std::vector<PlottedPixel> plotted_pixels(LineMethod method, Segment s, int width, int height) {
     std::vector<PlottedPixel> pixels;
     const ClippedSegment c = clip_segment(s.a, s.b, pixel_centres(width, height));
@@ -64,8 +77,11 @@ double exact_coverage(int x, int y, Segment s) {
 }
 // [/doc:exact-coverage]
 
-void score_segment(LineMethod method, Segment s, int width, int height, LineScore& score) {
-    const std::vector<PlottedPixel> pixels = plotted_pixels(method, s, width, height);
+void score_segment(LineMethod method, Segment whole, int width, int height, LineScore& score) {
+    const ClippedSegment visible = clip_segment(whole.a, whole.b, pixel_centres(width, height));
+    if (visible.result == ClipResult::refused || visible.result == ClipResult::outside) return;
+    const Segment s{visible.a, visible.b};
+    const std::vector<PlottedPixel> pixels = plotted_pixels(method, whole, width, height);
     ++score.segments;
     score.length += rl::length(rl::cast<double>(s.b - s.a));
     score.plot_calls += static_cast<long>(pixels.size());

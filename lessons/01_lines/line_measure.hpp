@@ -19,6 +19,13 @@ struct Segment {
 // directions. The same seed gives the same segments everywhere.
 std::vector<Segment> random_segments(int count, int size, std::uint64_t seed);
 
+// The same segments with each endpoint moved off its pixel centre by up to
+// half a pixel in x and in y, then scaled by `spread` about the image's
+// centre: spread 1 keeps them inside, spread 3 sends most across the image's
+// edges, so that draw_line clips them.
+std::vector<Segment> moved_segments(std::vector<Segment> segments, int size, double spread,
+                                    std::uint64_t seed);
+
 struct PlottedPixel {
     int x, y;
     float coverage;
@@ -54,6 +61,11 @@ struct LineScore {
     double coverage_error_per_length() const { return length > 0 ? coverage_error / length : 0; }
 };
 
+// Scores the method on the segment's visible part: the part between the
+// image's outermost pixel centres, where draw_line clips it (the whole
+// segment when it lies inside). Distances are to the true segment, so a
+// method that draws a clipped segment between other pixels than the
+// unclipped one would shows it.
 void score_segment(LineMethod method, Segment s, int width, int height, LineScore& score);
 
 }  // namespace lines

@@ -14,7 +14,7 @@ int main(int argc, char** argv) {
     std::string model = rl::project_model("torus").string();
     rl::ImageOptions image_options{"02_triangles.tga"};
     triangles::RasterMethod method = triangles::RasterMethod::edge;
-    bool no_cull = false, test_image = false, overdraw = false;
+    bool no_cull = false, test_image = false, overdraw = false, owners = false;
     std::vector<float> light{0.3f, 0.5f, 1.0f};
     rl::add_model_option(app, model);
     rl::add_image_options(app, image_options);
@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
         "--overdraw", overdraw,
         "Draw a fan of 12 triangles sharing a hub (48x48) coloured by how often each pixel "
         "is drawn: grey once, red twice or more");
+    app.add_flag("--owners", owners,
+                 "Draw a fan of 4 triangles whose spokes run through pixel centres (16x16), each "
+                 "pixel in the colour of the triangle that drew it: red where two did");
     CLI11_PARSE(app, argc, argv);
     // Not a structured binding: clang before 16 cannot capture one in a lambda.
     const std::string& output = image_options.output;
@@ -37,6 +40,12 @@ int main(int argc, char** argv) {
         if (overdraw) {
             rl::save_image(output, triangles::overdraw_fan(method, 48, 12));
             std::printf("overdraw fan drawn with %s into %s\n", triangles::name(method),
+                        output.c_str());
+            return 0;
+        }
+        if (owners) {
+            rl::save_image(output, triangles::edge_owners(method, 16));
+            std::printf("edge owners drawn with %s into %s\n", triangles::name(method),
                         output.c_str());
             return 0;
         }

@@ -21,4 +21,21 @@ rl::Image overdraw_fan(RasterMethod method, int size, int slices) {
     return image;
 }
 
+rl::Image edge_owners(RasterMethod method, int size) {
+    const rl::Rgba colours[4] = {
+        {60, 110, 220, 255}, {70, 170, 90, 255}, {230, 150, 40, 255}, {150, 80, 190, 255}};
+    const rl::Rgba none{0, 0, 0, 255}, twice{230, 30, 30, 255};
+    rl::Image image(size, size, none);
+    rl::Grid<int> owner(size, size, -1);
+    const float hub = size / 2 + 0.5f;
+    const std::vector<Triangle2> fan = disc_fan({hub, hub}, size * 0.42f, 4);
+    for (int i = 0; i < 4; ++i)
+        rasterize(method, fan[static_cast<std::size_t>(i)], size, size,
+                  [&](int x, int y, rl::vec3) {
+                      image.at(x, y) = owner.get(x, y) >= 0 ? twice : colours[i];
+                      owner.at(x, y) = i;
+                  });
+    return image;
+}
+
 }  // namespace triangles

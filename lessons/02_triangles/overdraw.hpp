@@ -12,4 +12,13 @@ namespace triangles {
 // more. A watertight rasterizer leaves no red and no black inside the disc.
 rl::Image overdraw_fan(RasterMethod method, int size, int slices);
 
+// Who owns the pixels on shared edges: a fan of four triangles around a hub
+// on a pixel centre, its spokes horizontal and vertical through pixel
+// centres, each pixel coloured by the triangle that drew it (right, top,
+// left, bottom: blue, green, orange, purple), red where two did, black where
+// none did. The top-left rule gives a horizontal spoke's pixels to the
+// triangles below it, a vertical spoke's to those on its right; scanline's
+// half-open rows give the horizontal spoke to the triangles above.
+rl::Image edge_owners(RasterMethod method, int size);
+
 }  // namespace triangles

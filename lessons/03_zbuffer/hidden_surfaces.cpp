@@ -31,12 +31,16 @@ void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
 }
 
 // [doc:painter]
-void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame) {
+void sort_far_to_near(std::vector<SceneTriangle>& triangles) {
     auto mean_depth = [](const SceneTriangle& t) { return t.v[0].z + t.v[1].z + t.v[2].z; };
     std::stable_sort(triangles.begin(), triangles.end(),
                      [&](const SceneTriangle& a, const SceneTriangle& b) {
                          return mean_depth(a) > mean_depth(b);
                      });
+}
+
+void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame) {
+    sort_far_to_near(triangles);
     draw_in_order(triangles, frame);
 }
 // [/doc:painter]

@@ -130,9 +130,9 @@ TEST(LineWeaknesses, WuPutsInkWhereTheExactLineIs) {
 // The pitfall "blending twice": Wu lines blend, so an edge drawn once for
 // each of its two triangles would come out darker than the rest.
 TEST(Wireframe, SharedEdgesAreDrawnOnceSoWuInkIsNotDoubled) {
-    const rl::Mesh square = rl::parse_obj(
-        "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n", "",
-        "square.obj");
+    const rl::Mesh square =
+        rl::parse_obj("v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\nf 1 2 3\nf 1 3 4\n",
+                      "", "square.obj");
     rl::Image once(64, 64, rl::Rgba{0, 0, 0, 255});
     EXPECT_EQ(lines::draw_wireframe(once, square, {200, 200, 200, 255}, LineMethod::wu), 5u);
     // The same two triangles, each listed twice: still five edges, the same image.

@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "footprint.hpp"
+#include "rasterlab/image_io.hpp"
 #include "rasterlab/image_metrics.hpp"
+#include "rasterlab/mesh.hpp"
 
 namespace {
 
@@ -102,6 +105,52 @@ TEST(MipChain, OddAndNonPowerOfTwoSizesGoDownToOneTexel) {
     const rl::Rgba last = chain.level(5).get(0, 0);
     EXPECT_NEAR(last.r, 18, 1);  // mean of 0..36
     EXPECT_NEAR(last.g, 11, 1);  // mean of 0..22
+}
+
+// The limitation lesson 06 removes: the chain averages the texture's bytes,
+// which are sRGB-encoded, not the light they stand for. On the floor's
+// checker the top level is the byte mean, about 137; averaged in linear light
+// and encoded again, the same texels give about 162.
+TEST(MipChain, AveragesEncodedBytesNotLinearLight) {
+    const rl::Image floor =
+        rl::load_image(rl::project_model("floor").replace_extension() += "_diffuse.tga");
+    const MipChain chain(floor);
+    const rl::Rgba top = chain.level(chain.levels() - 1).get(0, 0);
+    double bytes = 0, light = 0;
+    for (const rl::Rgba& p : floor.pixels()) {
+        const double c = p.r / 255.0;
+        bytes += p.r;
+        light += c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+    }
+    const double n = static_cast<double>(floor.pixels().size());
+    const double linear = light / n,
+                 encoded =
+                     255.0 * (linear <= 0.0031308 ? linear * 12.92
+                                                  : 1.055 * std::pow(linear, 1 / 2.4) - 0.055);
+    EXPECT_NEAR(top.r, bytes / n, 2.0);
+    EXPECT_NEAR(top.r, 137, 2);
+    EXPECT_NEAR(encoded, 162, 2);
+}
+
+// The flipped-texture pitfall: v = 0 must sample the image's bottom row,
+// for a file stored top row first (PNG) as for one stored bottom first (TGA).
+TEST(Sampling, VZeroSamplesTheBottomRowOfTheFile) {
+    rl::Image picture(4, 4, rl::Rgba{0, 0, 255, 255});  // blue, with a red bottom row
+    for (int x = 0; x < 4; ++x) picture.set(x, 0, {255, 0, 0, 255});
+    const auto folder = std::filesystem::temp_directory_path();
+    for (const char* name : {"rasterlab-v-zero.png", "rasterlab-v-zero.tga"}) {
+        const auto path = folder / name;
+        rl::save_image(path, picture);
+        const MipChain chain(rl::load_image(path));
+        std::filesystem::remove(path);
+        for (Filter f : kFilters) {
+            const SamplerState state{f, Wrap::clamp, {}};
+            EXPECT_EQ(to_rgba(sample(chain, {0.5f, 0.01f}, {}, state)), (rl::Rgba{255, 0, 0, 255}))
+                << name << " " << textures::name(f);
+            EXPECT_EQ(to_rgba(sample(chain, {0.5f, 0.99f}, {}, state)), (rl::Rgba{0, 0, 255, 255}))
+                << name << " " << textures::name(f);
+        }
+    }
 }
 
 TEST(MipChain, OneTexelTexturesSampleToThatTexel) {

@@ -194,4 +194,40 @@ TEST(TgaEncode, RleIsSmallerOnFlatImagesAndNeverMuchLarger) {
     EXPECT_EQ(rle_noisy.size(), raw_noisy.size() + 4 * 2);
 }
 
+// Packets never cross rows, so the overhead is per row: for 24- and 32-bit
+// pixels at most floor(w / 128) + 1 bytes a row, whatever the pixels. A
+// 1-pixel-wide image pays one byte per pixel, a third of a 24-bit pixel.
+TEST(TgaEncode, RleOverheadIsBoundedPerRowAndLargestOnNarrowImages) {
+    for (int width : {1, 2, 3, 127, 128, 129, 300}) {
+        for (unsigned seed = 1; seed <= 20; ++seed) {
+            for (TgaPixelFormat format : {TgaPixelFormat::bgr24, TgaPixelFormat::bgra32}) {
+                const Image image = random_image(width, 9, format, seed);
+                const auto raw = rl::encode_tga(image, {format, false, false});
+                const auto rle = rl::encode_tga(image, {format, true, false});
+                EXPECT_LE(rle.size(), raw.size() + 9u * static_cast<unsigned>(width / 128 + 1))
+                    << width << " wide, seed " << seed;
+            }
+        }
+    }
+    Image column(1, 1000);  // no two neighbours in a row: there are none
+    for (int y = 0; y < 1000; ++y)
+        column.set(0, y, {static_cast<std::uint8_t>(y), static_cast<std::uint8_t>(y * 7), 1, 255});
+    const auto raw = rl::encode_tga(column, {TgaPixelFormat::bgr24, false, false});
+    const auto rle = rl::encode_tga(column, {TgaPixelFormat::bgr24, true, false});
+    EXPECT_EQ(rle.size() - raw.size(), 1000u);  // 4 bytes a pixel instead of 3
+}
+
+// 8-bit grey is worse: a run of two costs as much as the two pixels raw, so
+// the pattern A A B C C D ... pays a raw-packet header for every third pixel.
+TEST(TgaEncode, GreyRleCanCostAThirdMore) {
+    Image row(300, 1);
+    for (int x = 0; x < 300; ++x) {
+        const auto level = static_cast<std::uint8_t>(x % 3 == 2 ? 200 - x / 3 : x / 3);
+        row.set(x, 0, {level, level, level, 255});
+    }
+    const auto raw = rl::encode_tga(row, {TgaPixelFormat::grey8, false, false});
+    const auto rle = rl::encode_tga(row, {TgaPixelFormat::grey8, true, false});
+    EXPECT_EQ(rle.size() - raw.size(), 100u);  // 4 bytes for every 3 pixels
+}
+
 }  // namespace

@@ -32,6 +32,10 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(rl::finite_number(0.0, 1000.0));
     app.add_option("--diff", diff_path, "Where to write a difference image when the check fails");
+    std::string overlay_path;
+    app.add_option("--overlay", overlay_path,
+                   "Always write ACTUAL dimmed, with the pixels that differ by more than "
+                   "--threshold painted magenta (for the docs' failure pictures)");
     CLI11_PARSE(app, argc, argv);
 
     return rl::guarded_main(
@@ -46,6 +50,10 @@ int main(int argc, char** argv) {
                 return 1;
             }
             const rl::ImageDiff d = rl::compare_images(expected, actual, threshold);
+            if (!overlay_path.empty()) {
+                rl::save_image(overlay_path, rl::difference_overlay(expected, actual, threshold));
+                std::printf("overlay written to %s\n", overlay_path.c_str());
+            }
             std::printf("max abs difference %d (allowed %d)\n", d.max_abs, max_abs);
             std::printf("differing pixels %.6f%% (difference > %d; allowed %.6f%%)\n",
                         100.0 * d.share_over, threshold, 100.0 * max_share);

@@ -23,6 +23,11 @@ ImageDiff compare_images(const Image& a, const Image& b, int threshold = 0);
 // where the difference exceeds `threshold`.
 Image difference_image(const Image& a, const Image& b, int threshold = 0);
 
+// `actual` dimmed to a third, with every pixel that differs from `expected`
+// by more than `threshold` painted magenta: where a method goes wrong, seen
+// on the picture it made (the docs' "where it breaks" figures).
+Image difference_overlay(const Image& expected, const Image& actual, int threshold = 0);
+
 // PSNR in dB for a given RMSE on a 0..255 scale.
 double psnr_from_rmse(double rmse);
 

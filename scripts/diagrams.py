@@ -1,0 +1,263 @@
+#!/usr/bin/env python3
+"""Draws the lessons' geometric diagrams as SVG, computed rather than drawn by
+hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
+
+  01_bresenham_midpoint.svg  the midpoint decision between two candidate pixels
+  02_edge_functions.svg      edge functions, the inside, and the top-left rule
+  02_barycentric_areas.svg   barycentric weights as ratios of areas
+  03_painter_cycle.svg       three sticks, each over the next: no order works
+  03_depth_mapping.svg       stored depth against view distance, per format
+  04_mip_footprint.svg       a pixel's footprint in the texture and its mip level
+"""
+import math
+import pathlib
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Polygon, Rectangle  # noqa: E402
+
+INK, LINE, ACCENT, SOFT = "#222222", "#2060c0", "#d04020", "#e8eef8"
+
+
+def save(figure, out, name):
+    figure.tight_layout()
+    figure.savefig(out / name, metadata={"Date": None})
+    plt.close(figure)
+    print(f"wrote {out / name}")
+
+
+def pixel_grid(axes, width, height):
+    for x in range(width + 1):
+        axes.plot([x, x], [0, height], color="#bbbbbb", lw=0.6)
+    for y in range(height + 1):
+        axes.plot([0, width], [y, y], color="#bbbbbb", lw=0.6)
+    for x in range(width):
+        for y in range(height):
+            axes.plot(x + 0.5, y + 0.5, ".", color="#999999", ms=3)
+    axes.set_xlim(-0.2, width + 0.2)
+    axes.set_ylim(-0.2, height + 0.2)
+    axes.set_aspect("equal")
+    axes.axis("off")
+
+
+def bresenham(x0, y0, x1, y1):
+    """The shallow-case midpoint line, as the lesson derives it."""
+    a, b = x1 - x0, y1 - y0
+    decision, y, pixels = 2 * b - a, y0, []
+    for x in range(x0, x1 + 1):
+        pixels.append((x, y))
+        if decision > 0:
+            y += 1
+            decision -= 2 * a
+        decision += 2 * b
+    return pixels
+
+
+def bresenham_midpoint(out):
+    figure, axes = plt.subplots(figsize=(7, 4))
+    width, height = 9, 5
+    pixel_grid(axes, width, height)
+    start, end = (0, 0), (8, 3)
+    pixels = bresenham(*start, *end)
+    for x, y in pixels:
+        axes.add_patch(Rectangle((x, y), 1, 1, color=SOFT, zorder=0))
+    axes.plot([start[0] + 0.5, end[0] + 0.5], [start[1] + 0.5, end[1] + 0.5], color=LINE, lw=2)
+    # One decision, at the third pixel: the candidates east and north-east, and their midpoint.
+    x, y = pixels[2]
+    east, north_east, mid = (x + 1.5, y + 0.5), (x + 1.5, y + 1.5), (x + 1.5, y + 1.0)
+    axes.plot(*east, "o", color=INK, ms=6)
+    axes.plot(*north_east, "o", color=INK, ms=6)
+    axes.plot(*mid, "x", color=ACCENT, ms=9, mew=2)
+    line_y = start[1] + 0.5 + (end[1] - start[1]) / (end[0] - start[0]) * (mid[0] - start[0] - 0.5)
+    above = line_y > mid[1]
+    axes.annotate("M = midpoint of the two candidates", mid, (mid[0] + 1.2, mid[1] + 2.2),
+                  arrowprops=dict(arrowstyle="->", color=ACCENT), color=ACCENT, fontsize=9)
+    axes.annotate(f"line {'above' if above else 'below'} M: step to the "
+                  f"{'north-east' if above else 'east'} pixel", (mid[0], line_y),
+                  (mid[0] + 1.2, mid[1] - 1.6), arrowprops=dict(arrowstyle="->", color=LINE),
+                  color=LINE, fontsize=9)
+    axes.set_title("Bresenham: the sign of F at the midpoint picks the next pixel (shaded: the line's pixels)",
+                   fontsize=9)
+    save(figure, out, "01_bresenham_midpoint.svg")
+
+
+def edge_functions(out):
+    figure, axes = plt.subplots(figsize=(6, 5))
+    width, height = 10, 8
+    pixel_grid(axes, width, height)
+    v = [(1.5, 1.5), (8.5, 1.5), (4.5, 6.5)]  # counter-clockwise, window y up
+    area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0])
+
+    def edge(a, b, p):
+        return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0])
+
+    def top_left(a, b):
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        return dy < 0 or (dy == 0 and dx < 0)
+
+    edges = [(v[1], v[2]), (v[2], v[0]), (v[0], v[1])]
+    for x in range(width):
+        for y in range(height):
+            p = (x + 0.5, y + 0.5)
+            values = [edge(a, b, p) for a, b in edges]
+            inside = all(e > 0 or (e == 0 and top_left(a, b)) for e, (a, b) in zip(values, edges))
+            on_edge = any(e == 0 for e in values) and all(e >= 0 for e in values)
+            if inside:
+                axes.add_patch(Rectangle((x, y), 1, 1, color=SOFT, zorder=0))
+            if on_edge:
+                axes.plot(*p, "o", color=ACCENT if inside else INK, ms=5, mfc="none" if not inside else ACCENT)
+    axes.add_patch(Polygon(v, closed=True, fill=False, ec=LINE, lw=1.8))
+    for a, b in edges:
+        middle = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+        axes.annotate("", (middle[0] + (b[0] - a[0]) * 0.08, middle[1] + (b[1] - a[1]) * 0.08), middle,
+                      arrowprops=dict(arrowstyle="->", color=LINE, lw=1.5))
+        kind = "left edge: its centres are in" if top_left(a, b) else "right or bottom edge: its centres are out"
+        axes.text(middle[0] + 0.3, middle[1] - 0.35, kind, fontsize=7, color=LINE)
+    axes.set_title(f"E(p) = cross(b − a, p − a) ≥ 0 on all three edges (twice the area: {area:g}).\n"
+                   "Filled dots: centres exactly on an edge that the top-left rule keeps; open: ones it drops",
+                   fontsize=8)
+    save(figure, out, "02_edge_functions.svg")
+
+
+def barycentric_areas(out):
+    figure, axes = plt.subplots(figsize=(5.5, 4.5))
+    v = [(0.0, 0.0), (6.0, 0.5), (2.0, 5.0)]
+    p = (2.6, 1.8)
+
+    def area(a, b, c):
+        return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]))
+
+    total = area(*v)
+    colours = ["#f4c7b8", "#c6dcf2", "#d4ecc8"]
+    for k in range(3):
+        a, b = v[(k + 1) % 3], v[(k + 2) % 3]
+        weight = area(p, a, b) / total
+        axes.add_patch(Polygon([p, a, b], closed=True, color=colours[k], ec="white"))
+        centre = ((p[0] + a[0] + b[0]) / 3, (p[1] + a[1] + b[1]) / 3)
+        axes.text(*centre, f"λ{k} = {weight:.2f}", ha="center", va="center", fontsize=9)
+    for k, (x, y) in enumerate(v):
+        axes.plot(x, y, "o", color=INK)
+        axes.text(x + (0.15 if k else -0.45), y + (0.15 if k != 1 else -0.45), f"v{k}", fontsize=10)
+    axes.plot(*p, "o", color=ACCENT)
+    axes.text(p[0] + 0.12, p[1] + 0.12, "p", color=ACCENT, fontsize=10)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    axes.set_title("λk = area of the triangle opposite vk, over the whole area;\n"
+                   "λ0 + λ1 + λ2 = 1 and λ0·v0 + λ1·v1 + λ2·v2 = p", fontsize=9)
+    save(figure, out, "02_barycentric_areas.svg")
+
+
+def painter_cycle(out):
+    figure, axes = plt.subplots(figsize=(5, 4.6))
+    names, colours = ["A", "B", "C"], ["#dc503c", "#50b45a", "#466edc"]
+    radius, half = 1.0, 0.12
+    corners = [(radius * math.cos(math.pi * (0.5 + 2 * i / 3)), radius * math.sin(math.pi * (0.5 + 2 * i / 3)))
+               for i in range(3)]
+    sticks = []
+    for i in range(3):  # as hsr_scenes.cpp builds them: past corner i to past corner i + 1
+        a, b = corners[i], corners[(i + 1) % 3]
+        dx, dy = b[0] - a[0], b[1] - a[1]
+        start, end = (a[0] - 0.25 * dx, a[1] - 0.25 * dy), (b[0] + 0.25 * dx, b[1] + 0.25 * dy)
+        length = math.hypot(end[0] - start[0], end[1] - start[1])
+        nx, ny = -(end[1] - start[1]) / length * half, (end[0] - start[0]) / length * half
+        sticks.append([(start[0] - nx, start[1] - ny), (end[0] - nx, end[1] - ny),
+                       (end[0] + nx, end[1] + ny), (start[0] + nx, start[1] + ny)])
+        axes.add_patch(Polygon(sticks[i], closed=True, color=colours[i]))
+        middle = ((start[0] + end[0]) / 2, (start[1] + end[1]) / 2)
+        axes.text(middle[0] * 1.9, middle[1] * 1.9, names[i], fontsize=11, ha="center", va="center",
+                  color=colours[i], fontweight="bold")
+    # At corner i, stick i (near there) lies over stick i + 2 (far there): redraw
+    # its first third, which holds that crossing, on top.
+    for i in range(3):
+        s0, s1, e1, e0 = sticks[i][0], sticks[i][1], sticks[i][2], sticks[i][3]
+
+        def third(p, q):
+            return (p[0] + (q[0] - p[0]) / 3, p[1] + (q[1] - p[1]) / 3)
+
+        axes.add_patch(Polygon([s0, third(s0, s1), third(e0, e1), e0], closed=True, color=colours[i]))
+        j = (i + 2) % 3
+        axes.text(corners[i][0] * 1.5, corners[i][1] * 1.5 + (0.12 if i == 0 else -0.12),
+                  f"{names[i]} over {names[j]}", fontsize=8, ha="center", va="center", color=INK)
+    axes.set_aspect("equal")
+    axes.set_xlim(-1.9, 1.9)
+    axes.set_ylim(-1.3, 1.9)
+    axes.axis("off")
+    axes.set_title("A runs from near (top) to far (bottom left), B from near (bottom left) to far (right),\n"
+                   "C from near (right) to far (top): each lies over the next at one crossing,\n"
+                   "so no drawing order of whole sticks is right", fontsize=8)
+    save(figure, out, "03_painter_cycle.svg")
+
+
+def depth_mapping(out):
+    figure, axes = plt.subplots(figsize=(6.5, 4.2))
+    near, far = 0.1, 1000.0
+    ws = [near * (far / near) ** (i / 400) for i in range(401)]
+    standard = [far * (w - near) / (w * (far - near)) for w in ws]
+    reverse = [near * (far - w) / (w * (far - near)) for w in ws]
+    linear = [(w - near) / (far - near) for w in ws]
+    axes.plot(ws, standard, color=LINE, label="standard: d = f (w − n) / (w (f − n))")
+    axes.plot(ws, reverse, color=ACCENT, label="reverse-Z: 1 − d")
+    axes.plot(ws, linear, color="#888888", ls="--", label="linear in w (not affine in screen space)")
+    half = 2 * near * far / (far + near)
+    axes.axvline(half, color=LINE, lw=0.6, ls=":")
+    axes.text(half * 1.2, 0.45, f"d reaches 0.5 at w = {half:.2f}:\nhalf of all depth values\nlie in front of it",
+              fontsize=7, color=LINE)
+    axes.set_xscale("log")
+    axes.set_xlabel("view distance w (near 0.1, far 1000)")
+    axes.set_ylabel("stored depth")
+    axes.legend(fontsize=7, loc="center right")
+    axes.grid(True, which="both", alpha=0.3)
+    axes.set_title("How each format spends its values over distance", fontsize=9)
+    save(figure, out, "03_depth_mapping.svg")
+
+
+def mip_footprint(out):
+    figure, axes = plt.subplots(figsize=(6, 5))
+    # A pixel's footprint in texel units: the parallelogram spanned by the
+    # derivatives of (u, v) * size along x and y, as level_of_detail sees it.
+    du, dv = (6.0, 1.5), (-1.2, 2.4)
+    origin = (3.0, 2.0)
+    corners = [origin, (origin[0] + du[0], origin[1] + du[1]),
+               (origin[0] + du[0] + dv[0], origin[1] + du[1] + dv[1]), (origin[0] + dv[0], origin[1] + dv[1])]
+    for x in range(13):
+        axes.plot([x, x], [0, 8], color="#cccccc", lw=0.5)
+    for y in range(9):
+        axes.plot([0, 12], [y, y], color="#cccccc", lw=0.5)
+    axes.add_patch(Polygon(corners, closed=True, color=SOFT, ec=LINE, lw=1.5))
+    along_x, along_y = math.hypot(*du), math.hypot(*dv)
+    rho = max(along_x, along_y)
+    level = math.log2(rho)
+    texel = 2 ** math.floor(level)
+    centre = (origin[0] + (du[0] + dv[0]) / 2, origin[1] + (du[1] + dv[1]) / 2)
+    axes.add_patch(Rectangle((centre[0] - texel / 2, centre[1] - texel / 2), texel, texel, fill=False,
+                             ec=ACCENT, lw=1.5, ls="--"))
+    axes.annotate(f"|∂(u,v)/∂x| = {along_x:.1f} texels", (origin[0] + du[0] / 2, origin[1] + du[1] / 2),
+                  (6.5, 0.6), arrowprops=dict(arrowstyle="->", color=LINE), color=LINE, fontsize=8)
+    axes.annotate(f"|∂(u,v)/∂y| = {along_y:.1f} texels", (origin[0] + dv[0] / 2, origin[1] + dv[1] / 2),
+                  (0.2, 6.8), arrowprops=dict(arrowstyle="->", color=LINE), color=LINE, fontsize=8)
+    axes.text(8.3, 6.4, f"ρ = longer side = {rho:.1f}\nlevel = log2 ρ = {level:.2f}\n"
+              f"dashed: one texel of level {math.floor(level)}\n({texel} × {texel} of level 0)",
+              fontsize=8, color=ACCENT)
+    axes.set_xlim(0, 12)
+    axes.set_ylim(0, 8)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    axes.set_title("One pixel's footprint in the texture (grid: level-0 texels) and the mip level chosen for it",
+                   fontsize=8)
+    save(figure, out, "04_mip_footprint.svg")
+
+
+def main():
+    out = pathlib.Path(sys.argv[1])
+    out.mkdir(parents=True, exist_ok=True)
+    plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
+    for draw in (bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
+                 mip_footprint):
+        draw(out)
+
+
+if __name__ == "__main__":
+    main()
