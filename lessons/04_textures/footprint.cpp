@@ -24,10 +24,21 @@ AffineScene minification_scene(const rl::Image& texture, int size) {
         size};
 }
 
+namespace {
+
+// The texel under (u, v) with repeat wrap, texels taken as constant squares.
+rl::Rgba square_texel(const rl::Image& texture, double u, double v) {
+    const int w = texture.width(), h = texture.height();
+    const int tx = static_cast<int>(std::floor((u - std::floor(u)) * w)) % w;
+    const int ty = static_cast<int>(std::floor((v - std::floor(v)) * h)) % h;
+    return texture.get(tx, ty);
+}
+
+}  // namespace
+
 // [doc:footprint-average]
 rl::Image footprint_average(const rl::Image& texture, const AffineScene& scene, int n) {
     rl::Image out(scene.size, scene.size);
-    const int w = texture.width(), h = texture.height();
     for (int y = 0; y < scene.size; ++y)
         for (int x = 0; x < scene.size; ++x) {
             double sum[3] = {0, 0, 0};
@@ -36,9 +47,7 @@ rl::Image footprint_average(const rl::Image& texture, const AffineScene& scene, 
                     const double px = x + (i + 0.5) / n, py = y + (j + 0.5) / n;
                     const double u = scene.origin.x + px * scene.du.x + py * scene.dv.x;
                     const double v = scene.origin.y + px * scene.du.y + py * scene.dv.y;
-                    const int tx = static_cast<int>(std::floor((u - std::floor(u)) * w)) % w;
-                    const int ty = static_cast<int>(std::floor((v - std::floor(v)) * h)) % h;
-                    const rl::Rgba c = texture.get(tx, ty);
+                    const rl::Rgba c = square_texel(texture, u, v);
                     sum[0] += c.r, sum[1] += c.g, sum[2] += c.b;
                 }
             const double count = double(n) * n;
@@ -48,6 +57,52 @@ rl::Image footprint_average(const rl::Image& texture, const AffineScene& scene, 
     return out;
 }
 // [/doc:footprint-average]
+
+MeshFootprint mesh_footprint_average(const rl::Mesh& mesh, const rl::Image& texture,
+                                     const TexturedOptions& options, int size, int n) {
+    // Every face rasterized at n x n samples per pixel, depth-tested, keeping
+    // the face and the (exactly affine) texture coordinate of each sample.
+    const int fine = size * n;
+    rl::FloatImage depth(fine, fine, 1.0f);
+    rl::Grid<int> face_at(fine, fine, -1);
+    rl::Grid<rl::vec2> uv_at(fine, fine, rl::vec2{});
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+        const TexturedFace face = textured_face(mesh, mesh.triangles[f], options, size, size);
+        if (!face.front) continue;
+        triangles::Triangle2 sub_pixels = face.screen();
+        for (rl::vec2& p : sub_pixels.v) p = p * static_cast<float>(n);
+        triangles::rasterize_edge(sub_pixels, fine, fine, [&](int x, int y, rl::vec3 b) {
+            const float z =
+                zbuffer::interpolate_depth(b, face.window[0].z, face.window[1].z, face.window[2].z);
+            if (!zbuffer::passes_depth_test(depth, x, y, z)) return;
+            face_at.at(x, y) = static_cast<int>(f);
+            uv_at.at(x, y) = triangles::interpolate(b, face.uv[0], face.uv[1], face.uv[2]);
+        });
+    }
+    MeshFootprint out{rl::Image(size, size), rl::Grid<std::uint8_t>(size, size, 0), 0};
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const int first = face_at.get(x * n, y * n);
+            bool one_face = first >= 0, any_face = false;
+            double sum[3] = {0, 0, 0};
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    const int f = face_at.get(x * n + i, y * n + j);
+                    any_face |= f >= 0;
+                    one_face &= f == first;
+                    const rl::vec2 uv = uv_at.get(x * n + i, y * n + j);
+                    const rl::Rgba c = square_texel(texture, uv.x, uv.y);
+                    sum[0] += c.r, sum[1] += c.g, sum[2] += c.b;
+                }
+            out.covered += any_face;
+            if (!one_face) continue;
+            const double count = double(n) * n;
+            auto byte = [&](double s) { return static_cast<std::uint8_t>(std::lround(s / count)); };
+            out.average.set(x, y, {byte(sum[0]), byte(sum[1]), byte(sum[2]), 255});
+            out.scored.at(x, y) = 1;
+        }
+    return out;
+}
 
 rl::Image render_scene(const MipChain& texture, const AffineScene& scene,
                        const SamplerState& state) {

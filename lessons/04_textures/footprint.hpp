@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "sampling.hpp"
+#include "textured.hpp"
 
 namespace textures {
 
@@ -29,6 +30,19 @@ AffineScene minification_scene(const rl::Image& texture, int size);
 // wrap) over the parallelogram the pixel maps to, from n x n samples in
 // double precision.
 rl::Image footprint_average(const rl::Image& texture, const AffineScene& scene, int n);
+
+// The same truth for a whole mesh drawn as draw_textured draws it (without
+// lighting) into a size x size image: per pixel, the texture averaged over
+// the part of the surface the pixel shows, from n x n depth-tested samples.
+// Only pixels that one face covers entirely are scored: a pixel on a face's
+// edge mixes faces or the background, which is coverage, not filtering.
+struct MeshFootprint {
+    rl::Image average;
+    rl::Grid<std::uint8_t> scored;  // 1 where `average` is the truth
+    long covered = 0;               // pixels with any face in them
+};
+MeshFootprint mesh_footprint_average(const rl::Mesh& mesh, const rl::Image& texture,
+                                     const TexturedOptions& options, int size, int n);
 
 // The scene rendered with a sampler: one sample at each pixel centre.
 rl::Image render_scene(const MipChain& texture, const AffineScene& scene,

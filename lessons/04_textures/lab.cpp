@@ -1,9 +1,11 @@
 // Lesson 04's lab: the three filters against the texture averaged over each
-// pixel's exact footprint, on a magnified and a strongly minified scene; and
-// how the error of trilinear filtering falls with the texture's size. Writes
-// 04_textures.csv and 04_texture_size.csv.
+// pixel's exact footprint, on a magnified and a strongly minified scene and on
+// the program's own crate; and how the error of trilinear filtering falls with
+// the texture's size. Writes 04_textures.csv and 04_texture_size.csv.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 #include "footprint.hpp"
@@ -31,6 +33,53 @@ void sample_scene(benchmark::State& state, const Scene* scene, Filter filter) {
         benchmark::DoNotOptimize(
             render_scene(*scene->texture, scene->mapping, sampler).pixels().data());
     state.SetItemsProcessed(state.iterations() * scene->mapping.size * scene->mapping.size);
+}
+
+// The crate as 04_textures draws it by default (without lighting, so that
+// only filtering differs from the truth), one whole frame per iteration.
+struct CrateScene {
+    const rl::Mesh* mesh;
+    const MipChain* texture;
+    TexturedOptions options;
+    int size;
+};
+
+void draw_crate(benchmark::State& state, const CrateScene* scene, Filter filter) {
+    TexturedOptions options = scene->options;
+    options.sampler.filter = filter;
+    for (auto _ : state) {
+        zbuffer::Frame frame(scene->size, scene->size);
+        draw_textured(frame, *scene->mesh, *scene->texture, options);
+        benchmark::DoNotOptimize(frame.colour.pixels().data());
+    }
+}
+
+rl::Image crate_frame(const CrateScene& scene, Filter filter) {
+    TexturedOptions options = scene.options;
+    options.sampler.filter = filter;
+    zbuffer::Frame frame(scene.size, scene.size);
+    draw_textured(frame, *scene.mesh, *scene.texture, options);
+    return frame.colour;
+}
+
+// RMSE, PSNR and largest difference over the scored pixels only.
+rl::ImageDiff compare_scored(const MeshFootprint& truth, const rl::Image& image) {
+    double squares = 0;
+    long count = 0;
+    rl::ImageDiff d;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            if (!truth.scored.get(x, y)) continue;
+            const rl::Rgba a = truth.average.get(x, y), b = image.get(x, y);
+            for (int c : {a.r - b.r, a.g - b.g, a.b - b.b}) {
+                squares += double(c) * c;
+                d.max_abs = std::max(d.max_abs, std::abs(c));
+            }
+            ++count;
+        }
+    d.rmse = count ? std::sqrt(squares / (3.0 * count)) : 0.0;
+    d.psnr = d.rmse > 0 ? 20.0 * std::log10(255.0 / d.rmse) : 99.0;
+    return d;
 }
 
 std::string bench_name(Filter f, const std::string& scene) {
@@ -66,6 +115,21 @@ int main(int argc, char** argv) {
             for (const Scene& s : scenes)
                 benchmark::RegisterBenchmark(bench_name(f, s.name).c_str(), sample_scene, &s, f)
                     ->Unit(benchmark::kMicrosecond);
+
+        std::vector<std::string> warnings;
+        const rl::Mesh crate = rl::load_obj(rl::project_model("crate"), &warnings);
+        const MipChain crate_texture(project_texture("crate"));
+        // The program's default size, 800 x 800 (4 x 4 truth samples a pixel
+        // keep the truth's buffers near 200 MB).
+        CrateScene crate_scene{&crate, &crate_texture, {}, options.quick ? 64 : 800};
+        crate_scene.options.lighting = false;
+        crate_scene.options.rotation =
+            zbuffer::rotation_y(kDefaultTurnY) * zbuffer::rotation_x(kDefaultTurnX);
+        const std::string crate_name = "the program's crate (default view, unlit)";
+        for (Filter f : kFilters)
+            benchmark::RegisterBenchmark(bench_name(f, crate_name).c_str(), draw_crate,
+                                         &crate_scene, f)
+                ->Unit(benchmark::kMicrosecond);
         const auto timings = rl::lab::run_benchmarks();
 
         rl::ResultsTable results(
@@ -84,6 +148,19 @@ int main(int argc, char** argv) {
                      timings.at(bench_name(f, s.name)).median_ns / (double(size) * size), d.rmse,
                      d.psnr, static_cast<long long>(d.max_abs), static_cast<long long>(size)});
             }
+        }
+
+        // The crate: time per covered pixel (the whole frame, clearing
+        // included), error over the pixels one face covers entirely.
+        const MeshFootprint crate_truth = mesh_footprint_average(
+            crate, crate_texture.level(0), crate_scene.options, crate_scene.size, 4);
+        for (Filter f : kFilters) {
+            const rl::ImageDiff d = compare_scored(crate_truth, crate_frame(crate_scene, f));
+            results.add_row({std::string(name(f)), crate_name,
+                             timings.at(bench_name(f, crate_name)).median_ns /
+                                 static_cast<double>(crate_truth.covered),
+                             d.rmse, d.psnr, static_cast<long long>(d.max_abs),
+                             static_cast<long long>(crate_scene.size)});
         }
 
         // Texture size: the minified floor from smaller and smaller copies of

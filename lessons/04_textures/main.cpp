@@ -15,7 +15,7 @@ int main(int argc, char** argv) {
     rl::ImageOptions image_options{"04_textures.tga"};
     textures::TexturedOptions options;
     bool no_light = false;
-    std::vector<float> turn{25.0f, -35.0f};
+    std::vector<float> turn{textures::kDefaultTurnX, textures::kDefaultTurnY};
     rl::add_model_option(app, model);
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--filter", options.sampler.filter, textures::kFilters,

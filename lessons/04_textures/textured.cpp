@@ -14,28 +14,39 @@ UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]) {
 }
 // [/doc:affine-derivatives]
 
+TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
+                           const TexturedOptions& options, int width, int height) {
+    TexturedFace out;
+    for (int k = 0; k < 3; ++k) {
+        out.world[k] = options.rotation * mesh.position(face, k) * options.scale;
+        out.window[k] = zbuffer::to_window(out.world[k], width, height);
+        const int t = face.corners[static_cast<std::size_t>(k)].uv;
+        out.uv[k] =
+            (t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{}) * options.uv_scale +
+            options.uv_offset;
+    }
+    // Not "area > 0": a face whose area is NaN (vertices too far out for a
+    // float) is not culled but passed on, for the rasterizer to refuse and count.
+    out.front = !(triangles::signed_area2(out.screen()) <= 0);
+    return out;
+}
+
 triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
                                     const MipChain& texture, const TexturedOptions& options) {
     const int width = frame.colour.width(), height = frame.colour.height();
     const rl::vec3 light{0.3f, 0.5f, 1.0f};
     triangles::DrawCounts counts;
-    for (const rl::Triangle& face : mesh.triangles) {
-        rl::vec3 world[3], window[3];
-        rl::vec2 screen[3], uv[3];
-        for (int k = 0; k < 3; ++k) {
-            world[k] = options.rotation * mesh.position(face, k) * options.scale;
-            window[k] = zbuffer::to_window(world[k], width, height);
-            screen[k] = window[k].xy();
-            const int t = face.corners[static_cast<std::size_t>(k)].uv;
-            uv[k] =
-                (t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{}) * options.uv_scale +
-                options.uv_offset;
-        }
-        const triangles::Triangle2 tri{{screen[0], screen[1], screen[2]}};
-        if (triangles::signed_area2(tri) <= 0) {
+    for (const rl::Triangle& triangle : mesh.triangles) {
+        const TexturedFace face = textured_face(mesh, triangle, options, width, height);
+        if (!face.front) {
             ++counts.culled;
             continue;
         }
+        const rl::vec3* world = face.world;
+        const rl::vec3* window = face.window;
+        const rl::vec2* uv = face.uv;
+        const triangles::Triangle2 tri = face.screen();
+        const rl::vec2 screen[3] = {tri.v[0], tri.v[1], tri.v[2]};
         const float shade =
             options.lighting
                 ? triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light)

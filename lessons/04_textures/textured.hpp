@@ -9,6 +9,9 @@
 
 namespace textures {
 
+// The program's default view: turned 25 degrees about x, then -35 about y.
+inline constexpr float kDefaultTurnX = 25.0f, kDefaultTurnY = -35.0f;
+
 struct TexturedOptions {
     SamplerState sampler;
     float uv_scale = 1.0f;  // texture coordinates are multiplied by this ...
@@ -21,6 +24,20 @@ struct TexturedOptions {
 // The constant derivatives of an affine texture mapping over a triangle:
 // solve uv(p) = uv0 + A (p - p0) for the 2x2 matrix A from two edges.
 UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]);
+
+// One face as draw_textured sees it: window coordinates (x, y in pixels, z
+// the window depth), texture coordinates after uv_scale and uv_offset, and
+// whether it faces the viewer (counter-clockwise on screen).
+struct TexturedFace {
+    rl::vec3 world[3], window[3];
+    rl::vec2 uv[3];
+    bool front;
+    triangles::Triangle2 screen() const {
+        return {{window[0].xy(), window[1].xy(), window[2].xy()}};
+    }
+};
+TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
+                           const TexturedOptions& options, int width, int height);
 
 // Draws the mesh into the frame; returns how many faces were drawn, culled
 // as back faces, and refused by the rasterizer.
