@@ -17,6 +17,7 @@ struct Options {
     rl::ImageOptions image{"00_framebuffer.tga", 256, 256};
     std::string png;
     bool raw = false;
+    lesson00::Misreading misread = lesson00::Misreading::none;
 };
 
 bool is_png(const std::string& path) {
@@ -44,6 +45,15 @@ int run(const Options& options) {
     if (!options.png.empty()) outputs.check(options.png);
     // [doc:lesson00-main]
     const rl::Image card = lesson00::make_test_card(width, height);
+    // [/doc:lesson00-main]
+    if (options.misread != lesson00::Misreading::none) {
+        outputs.stage(output, lesson00::misread(card, options.misread));
+        outputs.commit();
+        std::printf("wrote %s: the test card as a decoder that gets the %s wrong shows it\n",
+                    output.c_str(), lesson00::name(options.misread));
+        return 0;
+    }
+    // [doc:lesson00-round-trip]
 
     rl::TgaWriteOptions raw;
     raw.rle = false;
@@ -64,7 +74,7 @@ int run(const Options& options) {
     outputs.commit();
     const rl::Image from_disk = rl::load_image(output);  // and check what landed on disk
     if (from_disk != card) throw std::runtime_error(output + " does not read back identical");
-    // [/doc:lesson00-main]
+    // [/doc:lesson00-round-trip]
     std::printf("wrote %s\n", output.c_str());
     if (!options.png.empty()) std::printf("wrote %s\n", options.png.c_str());
     return 0;
@@ -81,6 +91,8 @@ int main(int argc, char** argv) {
     app.add_option("--png", o.png, "Also export the image as PNG to this path");
     app.add_flag("--raw", o.raw,
                  "Write the TGA output uncompressed (type 2) instead of RLE (type 10)");
+    rl::add_method_option(app, "--misread", o.misread, lesson00::kMisreadings,
+                          "Instead, write the card as a decoder with this mistake would show it");
     CLI11_PARSE(app, argc, argv);
     return rl::guarded_main("00_framebuffer", [&] { return run(o); });
 }

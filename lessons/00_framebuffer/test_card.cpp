@@ -1,5 +1,7 @@
 #include "test_card.hpp"
 
+#include <utility>
+
 #include <algorithm>
 
 namespace lesson00 {
@@ -36,5 +38,18 @@ rl::Image make_test_card(int width, int height) {
     return image;
 }
 // [/doc:test-card]
+
+const char* name(Misreading mistake) {
+    constexpr const char* names[] = {"none", "byte-order", "origin"};  // in kMisreadings' order
+    return names[static_cast<int>(mistake)];
+}
+
+rl::Image misread(const rl::Image& image, Misreading mistake) {
+    rl::Image out = image;
+    if (mistake == Misreading::byte_order)
+        for (rl::Rgba& p : out.pixels()) std::swap(p.r, p.b);
+    if (mistake == Misreading::origin) out.flip_vertically();
+    return out;
+}
 
 }  // namespace lesson00

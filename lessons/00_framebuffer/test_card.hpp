@@ -2,6 +2,8 @@
 // wrong origin, swapped colour bytes or a broken RLE run are visible at once.
 #pragma once
 
+#include <array>
+
 #include "rasterlab/image.hpp"
 
 namespace lesson00 {
@@ -15,5 +17,18 @@ namespace lesson00 {
 //  - a band of flat colour across the middle, where RLE compresses well, and
 //    a one-pixel checkerboard under it, where it cannot.
 rl::Image make_test_card(int width, int height);
+
+// The two classic mistakes of a first TGA decoder, for the page's "where it
+// breaks" pictures: byte_order reads TGA's blue-green-red pixels as
+// red-green-blue (red and blue swap); origin ignores the header's origin bit
+// and takes the file's first row for the top one (the picture turns upside
+// down, since our files start at the bottom).
+enum class Misreading { none, byte_order, origin };
+inline constexpr std::array<Misreading, 3> kMisreadings = {Misreading::none, Misreading::byte_order,
+                                                           Misreading::origin};
+const char* name(Misreading mistake);
+
+// What such a decoder shows for an image written correctly.
+rl::Image misread(const rl::Image& image, Misreading mistake);
 
 }  // namespace lesson00

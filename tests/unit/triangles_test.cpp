@@ -118,6 +118,17 @@ TEST_P(EveryMethod, TrianglesReachingTheRangeLimitStayInsideAndDrawEachPixelOnce
 INSTANTIATE_TEST_SUITE_P(All, EveryMethod, testing::ValuesIn(triangles::kRasterMethods),
                          [](const auto& param_info) { return triangles::name(param_info.param); });
 
+// docs/02_triangles.md works this example by hand; the code must agree.
+TEST(Barycentric, TheWorkedExampleOfThePage) {
+    const Triangle2 t{{{1, 1}, {9, 2}, {3, 7}}};
+    const float area = triangles::signed_area2(t);
+    EXPECT_EQ(area, 46.0f);
+    const rl::vec3 b = triangles::barycentric(t, {4, 3}, area);
+    EXPECT_FLOAT_EQ(b.x * 46, 19);
+    EXPECT_FLOAT_EQ(b.y * 46, 14);
+    EXPECT_FLOAT_EQ(b.z * 46, 13);
+}
+
 TEST(EdgeRasterizer, MatchesTheExactRuleOnRandomTrianglesAndTies) {
     for (const auto& scene :
          {triangles::random_triangles(300, 60, 64, 11), triangles::tie_triangles(300, 64, 12)}) {
