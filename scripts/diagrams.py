@@ -2,6 +2,7 @@
 """Draws the lessons' geometric diagrams as SVG, computed rather than drawn by
 hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
 
+  00_tga_layout.svg          a TGA file's header fields and an RLE packet
   01_bresenham_midpoint.svg  the midpoint decision between two candidate pixels
   02_edge_functions.svg      edge functions, the inside, and the top-left rule
   02_barycentric_areas.svg   barycentric weights as ratios of areas
@@ -41,6 +42,41 @@ def pixel_grid(axes, width, height):
     axes.set_ylim(-0.2, height + 0.2)
     axes.set_aspect("equal")
     axes.axis("off")
+
+
+# The 18-byte TGA header as tga.cpp reads it: (first byte, length, field).
+TGA_HEADER = [(0, 1, "ID\nlength"), (1, 1, "map\ntype"), (2, 1, "image\ntype"), (3, 5, "colour map\n(unused)"),
+              (8, 4, "x, y origin\n(unused)"), (12, 2, "width"), (14, 2, "height"), (16, 1, "bits per\npixel"),
+              (17, 1, "descrip-\ntor")]
+
+
+def tga_layout(out):
+    figure, axes = plt.subplots(figsize=(9, 3.6))
+    for first, length, label in TGA_HEADER:
+        axes.add_patch(Rectangle((first, 2), length, 1, fill=True, color=SOFT, ec=LINE))
+        axes.text(first + length / 2, 2.5, label, ha="center", va="center", fontsize=7)
+        axes.text(first, 3.1, str(first), fontsize=6, color="#777777")
+    axes.text(18, 3.1, "18", fontsize=6, color="#777777")
+    axes.add_patch(Rectangle((18, 2), 4, 1, fill=False, ec="#999999", ls="--"))
+    axes.text(20, 2.5, "ID, palette,\nthen pixels", ha="center", va="center", fontsize=7, color="#555555")
+    axes.text(0, 3.5, "Header: 18 bytes, little-endian. Descriptor bit 5: top row first; bit 4: right to left.",
+              fontsize=8)
+    # An RLE stream: a run packet and a raw packet, as the encoder writes them.
+    packets = [("1 | 0000011", "run of 4:\nheader, then 1 pixel", 1, 3), ("0 | 0000010", "raw, 3 pixels:\nheader, then 3 pixels", 1, 9)]
+    x = 0.0
+    for bits, label, header_len, data_len in packets:
+        axes.add_patch(Rectangle((x, 0), header_len * 1.6, 1, color="#f4c7b8", ec=ACCENT))
+        axes.text(x + 0.8, 0.5, bits, ha="center", va="center", fontsize=6.5)
+        axes.add_patch(Rectangle((x + 1.6, 0), data_len * 0.6, 1, color=SOFT, ec=LINE))
+        axes.text(x + 1.6 + data_len * 0.3, 0.5, "B G R" if data_len == 3 else "B G R  B G R  B G R",
+                  ha="center", va="center", fontsize=6.5)
+        axes.text(x + 0.1, -0.45, label, fontsize=7, va="center")
+        x += 1.6 + data_len * 0.6 + 1.0
+    axes.text(0, 1.3, "RLE packets (24-bit): bit 7 of the header byte = run, bits 0-6 = count - 1", fontsize=8)
+    axes.set_xlim(-0.3, 22.5)
+    axes.set_ylim(-1.0, 3.9)
+    axes.axis("off")
+    save(figure, out, "00_tga_layout.svg")
 
 
 def bresenham(x0, y0, x1, y1):
@@ -254,7 +290,7 @@ def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
-    for draw in (bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
+    for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint):
         draw(out)
 
