@@ -37,6 +37,17 @@ TEST(ImageMetrics, KnownDifferences) {
     EXPECT_EQ(diff.get(0, 0), (Rgba{0, 0, 0, 255}));
 }
 
+TEST(ImageMetrics, OverlayDimsTheActualImageAndPaintsWrongPixelsMagenta) {
+    Image expected(2, 1, Rgba{90, 60, 30, 255});
+    Image actual = expected;
+    actual.set(1, 0, Rgba{90, 60, 40, 255});  // off by 10
+    const Image loose = rl::difference_overlay(expected, actual, 10);
+    EXPECT_EQ(loose.get(1, 0), (Rgba{30, 20, 13, 255}));  // within the threshold: dimmed to a third
+    const Image strict = rl::difference_overlay(expected, actual, 9);
+    EXPECT_EQ(strict.get(0, 0), (Rgba{30, 20, 10, 255}));
+    EXPECT_EQ(strict.get(1, 0), (Rgba{255, 0, 255, 255}));
+}
+
 TEST(ImageMetrics, SizesMustMatch) {
     EXPECT_THROW(rl::compare_images(Image(2, 2), Image(2, 3)), std::invalid_argument);
 }
