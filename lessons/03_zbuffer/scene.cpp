@@ -7,16 +7,6 @@
 
 namespace zbuffer {
 
-rl::mat3 rotation_x(float degrees) {
-    const float a = degrees * std::numbers::pi_v<float> / 180.0f, c = std::cos(a), s = std::sin(a);
-    return {{rl::vec3{1, 0, 0}, rl::vec3{0, c, -s}, rl::vec3{0, s, c}}};
-}
-
-rl::mat3 rotation_y(float degrees) {
-    const float a = degrees * std::numbers::pi_v<float> / 180.0f, c = std::cos(a), s = std::sin(a);
-    return {{rl::vec3{c, 0, s}, rl::vec3{0, 1, 0}, rl::vec3{-s, 0, c}}};
-}
-
 rl::vec3 to_window(rl::vec3 p, int width, int height) {
     return {(p.x + 1.0f) * 0.5f * static_cast<float>(width),
             (p.y + 1.0f) * 0.5f * static_cast<float>(height), (1.0f - p.z) * 0.5f};
@@ -53,9 +43,11 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
 }
 
 std::vector<Placement> default_placements() {
-    return {
-        {rl::project_model("rock"), rl::mat3::identity(), 0.75f, {0, 0, 0}},
-        {rl::project_model("torus"), rotation_y(25) * rotation_x(-65), 0.95f, {0.05f, -0.05f, 0}}};
+    return {{rl::project_model("rock"), rl::mat3::identity(), 0.75f, {0, 0, 0}},
+            {rl::project_model("torus"),
+             rl::rotation_y(25) * rl::rotation_x(-65),
+             0.95f,
+             {0.05f, -0.05f, 0}}};
 }
 
 }  // namespace zbuffer

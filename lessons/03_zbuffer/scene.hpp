@@ -8,8 +8,8 @@
 
 #include "raster.hpp"
 #include "rasterlab/image.hpp"
-#include "rasterlab/mat.hpp"
 #include "rasterlab/mesh.hpp"
+#include "rasterlab/transform.hpp"
 
 namespace zbuffer {
 
@@ -26,9 +26,6 @@ struct Placement {
     float scale = 1.0f;
     rl::vec3 offset{};
 };
-
-rl::mat3 rotation_x(float degrees);
-rl::mat3 rotation_y(float degrees);
 
 // Orthographic, as in lessons 01 and 02: x, y in [-1, 1] fill the image, and
 // the viewer looks down -z, so window depth is (1 - z) / 2: z = 1 is nearest.

@@ -124,7 +124,7 @@ int main(int argc, char** argv) {
         CrateScene crate_scene{&crate, &crate_texture, {}, options.quick ? 64 : 800};
         crate_scene.options.lighting = false;
         crate_scene.options.rotation =
-            zbuffer::rotation_y(kDefaultTurnY) * zbuffer::rotation_x(kDefaultTurnX);
+            rl::rotation_y(kDefaultTurnY) * rl::rotation_x(kDefaultTurnX);
         const std::string crate_name = "the program's crate (default view, unlit)";
         for (Filter f : kFilters)
             benchmark::RegisterBenchmark(bench_name(f, crate_name).c_str(), draw_crate,

@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
         rl::check_image_output(output);  // before any work: a bad path costs nothing
         options.uv_offset.y = options.uv_offset.x;
         options.lighting = !no_light;
-        options.rotation = zbuffer::rotation_y(turn[1]) * zbuffer::rotation_x(turn[0]);
+        options.rotation = rl::rotation_y(turn[1]) * rl::rotation_x(turn[0]);
         options.sampler.border = {0.9f, 0.1f, 0.6f, 1.0f};  // loud, so that border texels show
         std::vector<std::string> warnings;
         const rl::Mesh mesh = rl::load_obj(model, &warnings);
