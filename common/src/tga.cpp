@@ -156,15 +156,16 @@ TgaHeader parse_tga_header(std::span<const std::uint8_t> bytes, const std::strin
     h.descriptor = p[17];  // bits 0-3: alpha bits; bit 4: right-to-left; bit 5: top row first
     // [/doc:tga-header]
 
+    using enum TgaImageType;
     switch (h.image_type) {
-        case 2:
-        case 10:
+        case static_cast<std::uint8_t>(true_colour):
+        case static_cast<std::uint8_t>(true_colour_rle):
             if (h.bits_per_pixel != 24 && h.bits_per_pixel != 32)
                 fail(name, std::to_string(h.bits_per_pixel) +
                                " bits per pixel does not fit a true-colour image (24 or 32)");
             break;
-        case 3:
-        case 11:
+        case static_cast<std::uint8_t>(grey):
+        case static_cast<std::uint8_t>(grey_rle):
             if (h.bits_per_pixel != 8)
                 fail(name, std::to_string(h.bits_per_pixel) +
                                " bits per pixel does not fit a greyscale image (8)");
@@ -243,7 +244,10 @@ std::vector<std::uint8_t> encode_tga(const Image& image, const TgaWriteOptions& 
     out.reserve(kTgaHeaderSize + static_cast<std::size_t>(image.width()) * image.height() * bpp);
     out.push_back(0);  // no image ID
     out.push_back(0);  // no colour map
-    out.push_back(grey ? (options.rle ? 11 : 3) : (options.rle ? 10 : 2));
+    const TgaImageType type =
+        grey ? (options.rle ? TgaImageType::grey_rle : TgaImageType::grey)
+             : (options.rle ? TgaImageType::true_colour_rle : TgaImageType::true_colour);
+    out.push_back(static_cast<std::uint8_t>(type));
     out.insert(out.end(), 5, 0);  // colour map specification: unused
     put_little_endian16(out, 0);  // x origin
     put_little_endian16(out, 0);  // y origin

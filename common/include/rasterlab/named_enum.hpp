@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstddef>
-#include <map>
 #include <optional>
 #include <string>
 
@@ -28,13 +27,6 @@ std::string names_of(const std::array<E, N>& all) {
         out += name(all[i]);
     }
     return out;
-}
-
-template <class E, std::size_t N>
-std::map<std::string, E> name_map(const std::array<E, N>& all) {
-    std::map<std::string, E> map;
-    for (E value : all) map.emplace(name(value), value);
-    return map;
 }
 
 }  // namespace rl

@@ -20,6 +20,7 @@ class TgaError : public FileError {
     using FileError::FileError;
 };
 
+// The image types this codec reads and writes (byte 2 of the header).
 enum class TgaImageType : std::uint8_t {
     true_colour = 2,
     grey = 3,
@@ -47,7 +48,10 @@ struct TgaHeader {
     std::uint8_t bits_per_pixel = 0;
     std::uint8_t descriptor = 0;
 
-    bool rle() const { return image_type == 10 || image_type == 11; }
+    bool rle() const {
+        return image_type == static_cast<std::uint8_t>(TgaImageType::true_colour_rle) ||
+               image_type == static_cast<std::uint8_t>(TgaImageType::grey_rle);
+    }
     bool top_row_first() const { return (descriptor & 0x20) != 0; }
     bool right_to_left() const { return (descriptor & 0x10) != 0; }
     int bytes_per_pixel() const { return bits_per_pixel / 8; }
