@@ -20,7 +20,9 @@ std::string errno_text() {
     return std::strerror(errno);
 }
 
+// "3 MiB" for sizes of a mebibyte or more (the caps are whole MiB), bytes below.
 std::string mebibytes(std::uintmax_t bytes) {
+    if (bytes < (std::uintmax_t{1} << 20)) return std::to_string(bytes) + " bytes";
     return std::to_string(bytes >> 20) + " MiB";
 }
 
