@@ -43,23 +43,20 @@ triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
             continue;
         }
         const rl::vec3* world = face.world;
-        const rl::vec3* window = face.window;
-        const rl::vec2* uv = face.uv;
         const triangles::Triangle2 tri = face.screen();
-        const rl::vec2 screen[3] = {tri.v[0], tri.v[1], tri.v[2]};
         const float shade =
             options.lighting
                 ? triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light)
                 : 1.0f;
-        const UvDerivatives derivatives = affine_derivatives(screen, uv);
+        const UvDerivatives derivatives = affine_derivatives(tri.v, face.uv);
         // [doc:textured-pixel]
         const bool drawn =
             triangles::rasterize_edge(tri, width, height, [&](int x, int y, rl::vec3 b) {
-                const float z =
-                    zbuffer::interpolate_depth(b, window[0].z, window[1].z, window[2].z);
+                const float z = zbuffer::interpolate_depth(b, face.window[0].z, face.window[1].z,
+                                                           face.window[2].z);
                 if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
-                const rl::vec2 at =
-                    triangles::interpolate(b, uv[0], uv[1], uv[2]);  // affine: exact here
+                const rl::vec2 at = triangles::interpolate(b, face.uv[0], face.uv[1],
+                                                           face.uv[2]);  // affine: exact here
                 rl::vec4 colour = sample(texture, at, derivatives, options.sampler);
                 colour = {colour.x * shade, colour.y * shade, colour.z * shade, 1.0f};
                 frame.colour.at(x, y) = to_rgba(colour);
