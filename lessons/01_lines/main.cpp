@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
         const rl::Mesh mesh = rl::load_obj(model, &warnings);
         rl::print_warnings("01_lines", warnings);
         // [doc:lesson01-main]
-        rl::Image image(width, height, rl::Rgba{16, 18, 24, 255});
+        rl::Image image(width, height, rl::kBackground);
         const std::size_t edges =
             lines::draw_wireframe(image, mesh, rl::Rgba{235, 235, 220, 255}, method);
         rl::save_image(output, image);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "viewport.hpp"
+#include "01_lines/viewport.hpp"
 
 namespace triangles {
 

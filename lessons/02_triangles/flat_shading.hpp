@@ -8,11 +8,17 @@
 
 namespace triangles {
 
+// The light every lesson uses by default: the direction towards it (above,
+// right, in front of the viewer), normalised on use; and the surface colour
+// of an untextured model.
+inline constexpr rl::vec3 kDefaultLight{0.3f, 0.5f, 1.0f};
+inline constexpr rl::Rgba kSurfaceColour{235, 225, 205, 255};
+
 struct FlatOptions {
     RasterMethod method = RasterMethod::edge;
     bool cull_back_faces = true;
-    rl::vec3 light_direction{0.3f, 0.5f, 1.0f};  // towards the light; normalised on use
-    rl::Rgba colour{235, 225, 205, 255};
+    rl::vec3 light_direction = kDefaultLight;  // towards the light
+    rl::Rgba colour = kSurfaceColour;
 };
 
 // Lambert's cosine law: a face lit at an angle receives light in proportion

@@ -15,7 +15,8 @@ int main(int argc, char** argv) {
     rl::ImageOptions image_options{"02_triangles.tga"};
     triangles::RasterMethod method = triangles::RasterMethod::edge;
     bool no_cull = false, test_image = false, overdraw = false, owners = false;
-    std::vector<float> light{0.3f, 0.5f, 1.0f};
+    std::vector<float> light{triangles::kDefaultLight.x, triangles::kDefaultLight.y,
+                             triangles::kDefaultLight.z};
     rl::add_model_option(app, model);
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--raster", method, triangles::kRasterMethods, "Rasterizer");
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> warnings;
         const rl::Mesh mesh = rl::load_obj(model, &warnings);
         rl::print_warnings("02_triangles", warnings);
-        rl::Image image(width, height, rl::Rgba{16, 18, 24, 255});
+        rl::Image image(width, height, rl::kBackground);
         triangles::FlatOptions options;
         options.method = method;
         options.cull_back_faces = !no_cull;

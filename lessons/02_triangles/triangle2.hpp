@@ -23,7 +23,7 @@ inline float signed_area2(const Triangle2& t) {
 // rasterizers: 2^22 (4,194,304). Within it the fixed-point edge functions fit
 // 64-bit integers (every difference fits 31 bits, every product 62), and the
 // float methods, whose spacing there is half a pixel, still get only about
-// one pixel in a thousand wrong (tests/unit/triangles_test.cpp); beyond it
+// one pixel in a thousand wrong (tests/lessons/02_triangles/triangles_test.cpp); beyond it
 // their errors grow with the coordinates, and from 10^19 a float edge
 // function overflows. A triangle reaching beyond is
 // refused (drawn not at all, and counted): lesson 05 clips real scenes to a

@@ -23,7 +23,7 @@ struct Frame {
     rl::Grid<int> ids;
     rl::FloatImage depth;     // window depth, 1 (the far plane) where nothing was drawn
     std::size_t refused = 0;  // triangles the rasterizer refused (see triangles::rasterize)
-    Frame(int width, int height, rl::Rgba background = {16, 18, 24, 255})
+    Frame(int width, int height, rl::Rgba background = rl::kBackground)
         : colour(width, height, background), ids(width, height, -1), depth(width, height, 1.0f) {}
 };
 

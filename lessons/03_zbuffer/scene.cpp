@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "flat_shading.hpp"
+#include "02_triangles/flat_shading.hpp"
 
 namespace zbuffer {
 
@@ -16,8 +16,6 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
                                        int height, std::vector<std::string>* warnings,
                                        std::size_t* culled) {
     std::vector<SceneTriangle> scene;
-    const rl::vec3 light{0.3f, 0.5f, 1.0f};
-    const rl::Rgba base{235, 225, 205, 255};
     for (const Placement& placement : placements) {
         const rl::Mesh mesh = rl::load_obj(placement.model, warnings);
         for (const rl::Triangle& face : mesh.triangles) {
@@ -33,8 +31,9 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
                 continue;
             }
             t.colour = triangles::lit(
-                base,
-                triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light));
+                triangles::kSurfaceColour,
+                triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]),
+                                   triangles::kDefaultLight));
             t.id = static_cast<int>(scene.size());
             scene.push_back(t);
         }

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "raster.hpp"
+#include "02_triangles/raster.hpp"
 #include "rasterlab/image.hpp"
 #include "rasterlab/mesh.hpp"
 #include "rasterlab/transform.hpp"

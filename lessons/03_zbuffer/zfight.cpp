@@ -65,7 +65,7 @@ double zfight_share(DepthFormat format, DepthRange range, const TwoPlanes& scene
 // [/doc:zfight-share]
 
 rl::Image zfight_map(DepthFormat format, DepthRange range, const TwoPlanes& scene) {
-    rl::Image image(scene.size, scene.size, rl::Rgba{16, 18, 24, 255});
+    rl::Image image(scene.size, scene.size, rl::kBackground);
     for_each_pixel(scene, [&](int x, int y, Hit h) {
         if (h.near_w < range.near_plane || h.far_w > range.far_plane) return;
         image.set(

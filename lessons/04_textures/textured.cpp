@@ -1,6 +1,6 @@
 #include "textured.hpp"
 
-#include "flat_shading.hpp"
+#include "02_triangles/flat_shading.hpp"
 
 namespace textures {
 
@@ -34,7 +34,6 @@ TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
 triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
                                     const MipChain& texture, const TexturedOptions& options) {
     const int width = frame.colour.width(), height = frame.colour.height();
-    const rl::vec3 light{0.3f, 0.5f, 1.0f};
     triangles::DrawCounts counts;
     for (const rl::Triangle& triangle : mesh.triangles) {
         const TexturedFace face = textured_face(mesh, triangle, options, width, height);
@@ -46,7 +45,8 @@ triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
         const triangles::Triangle2 tri = face.screen();
         const float shade =
             options.lighting
-                ? triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), light)
+                ? triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]),
+                                     triangles::kDefaultLight)
                 : 1.0f;
         const UvDerivatives derivatives = affine_derivatives(tri.v, face.uv);
         // [doc:textured-pixel]

@@ -3,7 +3,7 @@
 // chosen filter and wrap mode.
 #pragma once
 
-#include "hidden_surfaces.hpp"
+#include "03_zbuffer/hidden_surfaces.hpp"
 #include "rasterlab/mesh.hpp"
 #include "sampling.hpp"
 

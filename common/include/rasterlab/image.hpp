@@ -15,6 +15,10 @@ struct Rgba {
     friend bool operator==(const Rgba&, const Rgba&) = default;
 };
 
+// What every lesson clears its image to: a dark blue-grey, so that black
+// (unlit) surfaces still stand out from the background.
+inline constexpr Rgba kBackground{16, 18, 24, 255};
+
 // The largest image any part of rasterlab creates or reads: 2^28 pixels
 // (16384 x 16384), 1 GiB of RGBA. Larger requests are refused, not attempted.
 inline constexpr std::size_t kMaxPixels = std::size_t{1} << 28;

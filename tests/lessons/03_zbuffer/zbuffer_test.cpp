@@ -4,8 +4,8 @@
 // measured and pinned.
 #include <gtest/gtest.h>
 
-#include "hsr_scenes.hpp"
-#include "zfight.hpp"
+#include "03_zbuffer/hsr_scenes.hpp"
+#include "03_zbuffer/zfight.hpp"
 
 namespace {
 

@@ -6,9 +6,9 @@
 #include <limits>
 #include <set>
 
-#include "draw_line.hpp"
-#include "line_measure.hpp"
-#include "wireframe.hpp"
+#include "01_lines/draw_line.hpp"
+#include "01_lines/line_measure.hpp"
+#include "01_lines/wireframe.hpp"
 
 namespace {
 
