@@ -1,0 +1,86 @@
+#include "camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "rasterlab/transform.hpp"
+
+namespace perspective {
+
+void check(const Camera& camera) {
+    if (!(camera.fov_y > 0 && camera.fov_y < 180))
+        throw std::invalid_argument(
+            "--fov: the vertical field of view must be in (0, 180) degrees");
+    if (!(camera.near > 0))
+        throw std::invalid_argument("--near: the near plane must be in front of the eye (> 0)");
+    if (!(camera.near < camera.far)) throw std::invalid_argument("--near/--far: need near < far");
+    if (!rl::look_at(camera.eye, camera.target, camera.up))
+        throw std::invalid_argument(
+            "--eye/--target/--up: the eye must differ from the target, and up must not be "
+            "parallel to the viewing direction");
+}
+
+rl::mat4 view_projection(const Camera& camera, float aspect) {
+    const std::optional<rl::mat4> view = rl::look_at(camera.eye, camera.target, camera.up);
+    if (!view) throw std::invalid_argument("--eye/--target/--up: no view for this camera");
+    return rl::perspective(camera.fov_y, aspect, camera.near, camera.far) * *view;
+}
+
+void Box::add(rl::vec3 p) {
+    min = {std::min(min.x, p.x), std::min(min.y, p.y), std::min(min.z, p.z)};
+    max = {std::max(max.x, p.x), std::max(max.y, p.y), std::max(max.z, p.z)};
+}
+
+void Box::add(const Box& b) {
+    if (b.empty()) return;
+    add(b.min);
+    add(b.max);
+}
+
+Box bounds(const rl::Mesh& mesh, const rl::mat4& model) {
+    Box box;
+    for (const rl::vec3& p : mesh.positions) box.add((model * rl::extend(p, 1.0f)).xyz());
+    return box;
+}
+
+Camera frame_box(const Box& box, float fov_y, float aspect) {
+    Camera camera;
+    camera.fov_y = fov_y;
+    if (box.empty()) return camera;
+    camera.target = box.centre();
+    // In the camera's frame (right, up, back towards the eye), a corner c at
+    // (x, y, z) from the target is seen at x / (d - z) across: it fits when
+    // d >= z + |x| / tan(half fov x), and likewise in y. The nearest eye
+    // that fits all eight corners frames the box tightly.
+    const rl::vec3 back = rl::normalize(kFramingDirection);
+    const rl::vec3 right = rl::normalize(rl::cross(camera.up, back));
+    const rl::vec3 up = rl::cross(back, right);
+    const float tan_y = std::tan(rl::radians(fov_y) * 0.5f), tan_x = tan_y * aspect;
+    float distance = 1e-6f;
+    for (int i = 0; i < 8; ++i) {
+        const rl::vec3 c = box.corner(i) - camera.target;
+        const float z = rl::dot(c, back);
+        distance = std::max({distance, z + std::abs(rl::dot(c, right)) / tan_x,
+                             z + std::abs(rl::dot(c, up)) / tan_y});
+    }
+    camera.eye = camera.target + back * (distance * 1.02f);  // a 2% margin
+    fit_depth_range(camera, box);
+    return camera;
+}
+
+void fit_depth_range(Camera& camera, const Box& box) {
+    if (box.empty()) return;
+    // Along the view axis, the box's corners span [nearest, farthest].
+    const rl::vec3 forward = rl::normalize(camera.target - camera.eye);
+    float nearest = std::numeric_limits<float>::max(), farthest = 0;
+    for (int i = 0; i < 8; ++i) {
+        const float d = rl::dot(box.corner(i) - camera.eye, forward);
+        nearest = std::min(nearest, d);
+        farthest = std::max(farthest, d);
+    }
+    camera.far = std::max(farthest * 1.01f, 1e-3f);
+    camera.near = std::max(nearest * 0.99f, camera.far * 1e-4f);
+}
+
+}  // namespace perspective

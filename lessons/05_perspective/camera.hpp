@@ -1,0 +1,67 @@
+// The camera: where the eye is, what it looks at, and how wide it sees;
+// from it the view and projection matrices of rl/transform.hpp, and a
+// camera that frames a scene's bounding box when the user gives none.
+// Derivations: docs/05_perspective.md#the-camera.
+//
+//   perspective::Camera camera = perspective::frame_box(bounds, 50.0f, 4.0f / 3);
+//   perspective::check(camera);  // throws std::invalid_argument naming the option
+//   const rl::mat4 view_projection = perspective::view_projection(camera, 4.0f / 3);
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "rasterlab/mat.hpp"
+#include "rasterlab/mesh.hpp"
+
+namespace perspective {
+
+struct Camera {
+    rl::vec3 eye{0, 0, 3};
+    rl::vec3 target{0, 0, 0};
+    rl::vec3 up{0, 1, 0};
+    float fov_y = 50.0f;  // vertical field of view, degrees
+    float near = 0.1f;
+    float far = 100.0f;
+};
+
+// Throws std::invalid_argument, naming the option to change, unless the
+// camera defines a projection: 0 < fov_y < 180, 0 < near < far, eye !=
+// target, and up not parallel to the viewing direction.
+void check(const Camera& camera);
+
+// projection * view, for an image of width / height = aspect.
+rl::mat4 view_projection(const Camera& camera, float aspect);
+
+// An axis-aligned box; `empty` until something is added.
+struct Box {
+    rl::vec3 min{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                 std::numeric_limits<float>::max()};
+    rl::vec3 max{-std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
+                 -std::numeric_limits<float>::max()};
+    bool empty() const { return min.x > max.x; }
+    void add(rl::vec3 p);
+    void add(const Box& b);
+    rl::vec3 centre() const { return (min + max) * 0.5f; }
+    rl::vec3 corner(int i) const {  // i in 0..7: bit 0 picks x, bit 1 y, bit 2 z
+        return {(i & 1) ? max.x : min.x, (i & 2) ? max.y : min.y, (i & 4) ? max.z : min.z};
+    }
+};
+
+// The box around a mesh's positions after the model matrix.
+Box bounds(const rl::Mesh& mesh, const rl::mat4& model);
+
+// The direction the framing camera looks from: above, right and in front,
+// so that a floor recedes and three faces of a box show.
+inline constexpr rl::vec3 kFramingDirection{0.45f, 0.4f, 1.0f};
+
+// A camera looking at the box's centre from kFramingDirection, just far
+// enough that all eight corners of the box are in view, with near and far
+// planes just around the box.
+Camera frame_box(const Box& box, float fov_y, float aspect);
+
+// Near and far planes for a given eye: just around the box (near at least
+// far / 10^4, so that an eye inside the box still gets a usable depth range).
+void fit_depth_range(Camera& camera, const Box& box);
+
+}  // namespace perspective

@@ -1,0 +1,128 @@
+// Homogeneous clipping: a triangle in clip space (before the divide by w)
+// cut against planes of the view frustum by Sutherland-Hodgman, its
+// attributes interpolated at the new vertices. Clipping happens before the
+// divide because a vertex behind the eye (w <= 0) has no meaningful window
+// position at all; in clip space every plane is linear, so a straight line
+// cut is exact. Derivation and pictures: docs/05_perspective.md#clipping.
+//
+//   perspective::ClipPolygon<rl::vec2> polygon = perspective::clip_triangle(
+//       {{{p0, uv0}, {p1, uv1}, {p2, uv2}}}, perspective::ClipMode::guard_band, 800, 600);
+//   for (int i = 1; i + 1 < polygon.size; ++i)  // a fan: (0, i, i + 1)
+//       draw(polygon.vertices[0], polygon.vertices[i], polygon.vertices[i + 1]);
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <concepts>
+
+#include "rasterlab/named_enum.hpp"
+#include "rasterlab/vec.hpp"
+
+namespace perspective {
+
+// What the pipeline interpolates between vertices: anything with + and * float
+// (rl::vec2 texture coordinates, a struct of several, ...).
+template <class V>
+concept Varyings = std::default_initializable<V> && std::copyable<V> &&
+    requires(V a, V b, float s) {
+    { a + b } -> std::convertible_to<V>;
+    { a* s } -> std::convertible_to<V>;
+};
+
+// A vertex as the vertex stage hands it on: a clip-space position and the
+// attributes to interpolate.
+template <Varyings V>
+struct ClipVertex {
+    rl::vec4 position;
+    V varyings;
+};
+
+// Which planes a triangle is cut against:
+//   none        nothing: a vertex with w <= 0 lands on the wrong side of the
+//               screen or at infinity (the failure the lab measures);
+//   near        the near plane only, so w >= near > 0, but x and y may still
+//               run past the rasterizer's 2^22-pixel range;
+//   guard_band  near and far, and x, y against a band so wide that no
+//               window coordinate passes 2^21 pixels; the rasterizer's own
+//               scissor does the rest, and few triangles are ever cut;
+//   all         the six planes of the frustum.
+enum class ClipMode { none, near, guard_band, all };
+inline constexpr std::array<ClipMode, 4> kClipModes = {ClipMode::none, ClipMode::near,
+                                                       ClipMode::guard_band, ClipMode::all};
+const char* name(ClipMode mode);
+
+// A plane in clip space: a point p is inside when dot(plane, p) >= 0.
+using ClipPlane = rl::vec4;
+
+// The guard band's half-width in NDC units for an image of this size: the
+// window x of NDC x = g is (g + 1) / 2 * width, kept within 2^21 pixels, half
+// the rasterizer's limit, so that the fixed-point snap adds no overflow.
+float guard_band(int width, int height);
+
+// The planes of a mode, at most six (count says how many).
+struct ClipPlanes {
+    std::array<ClipPlane, 6> planes;
+    int count = 0;
+};
+ClipPlanes clip_planes(ClipMode mode, int width, int height);
+
+// A convex polygon: a triangle cut by k planes has at most 3 + k vertices.
+template <Varyings V>
+struct ClipPolygon {
+    std::array<ClipVertex<V>, 9> vertices;
+    int size = 0;
+};
+
+// [doc:clip-polygon]
+// One Sutherland-Hodgman pass: keep the vertices inside the plane, and
+// where an edge crosses it, add the crossing. The crossing's parameter t
+// comes from the signed distances d = dot(plane, p), which are linear along
+// the edge in clip space.
+template <Varyings V>
+ClipPolygon<V> clip_against(const ClipPolygon<V>& in, ClipPlane plane) {
+    ClipPolygon<V> out;
+    for (int i = 0; i < in.size; ++i) {
+        const ClipVertex<V>& a = in.vertices[static_cast<std::size_t>(i)];
+        const ClipVertex<V>& b = in.vertices[static_cast<std::size_t>((i + 1) % in.size)];
+        const float da = rl::dot(plane, a.position), db = rl::dot(plane, b.position);
+        if (da >= 0) out.vertices[static_cast<std::size_t>(out.size++)] = a;
+        if ((da >= 0) != (db >= 0)) {  // the edge crosses the plane
+            const float t = da / (da - db);
+            out.vertices[static_cast<std::size_t>(out.size++)] = {
+                a.position + (b.position - a.position) * t, a.varyings * (1 - t) + b.varyings * t};
+        }
+    }
+    return out;
+}
+// [/doc:clip-polygon]
+
+// Whether the triangle needs any cutting against these planes: most do not,
+// and they skip clip_triangle's copies.
+inline bool inside_all(const ClipPlanes& planes, const rl::vec4 (&p)[3]) {
+    for (int k = 0; k < planes.count; ++k)
+        for (const rl::vec4& q : p)
+            if (!(rl::dot(planes.planes[static_cast<std::size_t>(k)], q) >= 0)) return false;
+    return true;
+}
+
+inline bool finite(const rl::vec4& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+}
+
+// The triangle cut against every plane of the set; empty (size < 3) when
+// nothing of it is inside, or when a coordinate is NaN or infinite (such a
+// vertex has no place in any plane's half-space).
+template <Varyings V>
+ClipPolygon<V> clip_triangle(const std::array<ClipVertex<V>, 3>& triangle,
+                             const ClipPlanes& planes) {
+    ClipPolygon<V> polygon;
+    for (const ClipVertex<V>& v : triangle)
+        if (!finite(v.position)) return polygon;
+    for (const ClipVertex<V>& v : triangle)
+        polygon.vertices[static_cast<std::size_t>(polygon.size++)] = v;
+    for (int k = 0; k < planes.count && polygon.size >= 3; ++k)
+        polygon = clip_against(polygon, planes.planes[static_cast<std::size_t>(k)]);
+    return polygon;
+}
+
+}  // namespace perspective

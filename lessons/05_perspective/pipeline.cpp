@@ -1,0 +1,44 @@
+#include "pipeline.hpp"
+
+namespace perspective {
+
+const char* name(Interpolation interpolation) {
+    switch (interpolation) {
+        case Interpolation::affine:
+            return "affine";
+        case Interpolation::perspective:
+            return "perspective";
+    }
+    return "?";
+}
+
+PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
+    objects_culled += o.objects_culled;
+    faces += o.faces;
+    back_faces += o.back_faces;
+    outside += o.outside;
+    clipped += o.clipped;
+    drawn += o.drawn;
+    refused += o.refused;
+    fragments += o.fragments;
+    return *this;
+}
+
+// [doc:outside-frustum]
+bool outside_frustum(const Box& box, const rl::mat4& model_view_projection) {
+    if (box.empty()) return true;
+    rl::vec4 corners[8];
+    for (int i = 0; i < 8; ++i)
+        corners[i] = model_view_projection * rl::extend(box.corner(i), 1.0f);
+    const ClipPlanes frustum = clip_planes(ClipMode::all, 1, 1);
+    for (int k = 0; k < frustum.count; ++k) {
+        int outside = 0;
+        for (const rl::vec4& c : corners)
+            outside += rl::dot(frustum.planes[static_cast<std::size_t>(k)], c) < 0;
+        if (outside == 8) return true;  // every corner beyond the same plane
+    }
+    return false;
+}
+// [/doc:outside-frustum]
+
+}  // namespace perspective

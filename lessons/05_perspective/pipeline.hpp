@@ -1,0 +1,221 @@
+// The pipeline every drawing lesson from here on goes through, in the order a
+// GPU runs it:
+//
+//   vertex stage -> clip space -> back-face cull -> clip -> divide by w
+//     -> viewport -> rasterizer (lesson 02) -> early depth test (lesson 03)
+//     -> per-pixel stage -> colour
+//
+// A lesson supplies two functions: the vertex stage turns one corner of a
+// face into a clip-space position and the attributes ("varyings") to carry
+// to the pixels; the per-pixel stage turns a Fragment (the interpolated
+// varyings, their screen derivatives on request) into a colour. Everything
+// between is here, once. Derivations: docs/05_perspective.md.
+//
+//   const rl::mat4 mvp = perspective::view_projection(camera, aspect) * model;
+//   perspective::draw_mesh<rl::vec2>(
+//       mesh, frame, options,
+//       [&](const rl::Triangle& face, int corner) {   // vertex stage
+//           return perspective::ClipVertex<rl::vec2>{
+//               mvp * rl::extend(mesh.position(face, corner), 1.0f), uv_of(face, corner)};
+//       },
+//       [&](const perspective::Fragment<rl::vec2>& f) {  // per-pixel stage
+//           return colour_at(f.varyings, f.d_dx(), f.d_dy());
+//       });
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "02_triangles/raster.hpp"
+#include "03_zbuffer/hidden_surfaces.hpp"
+#include "camera.hpp"
+#include "clipping.hpp"
+#include "rasterlab/mesh.hpp"
+#include "rasterlab/transform.hpp"
+
+namespace perspective {
+
+// How varyings are interpolated between a triangle's vertices: linearly in
+// the window (what lessons 02-04 did; wrong under perspective) or linearly
+// in the surface, by interpolating varyings / w and 1 / w and dividing.
+enum class Interpolation { affine, perspective };
+inline constexpr std::array<Interpolation, 2> kInterpolations = {Interpolation::affine,
+                                                                 Interpolation::perspective};
+const char* name(Interpolation interpolation);
+
+struct PipelineOptions {
+    ClipMode clip = ClipMode::guard_band;
+    Interpolation interpolation = Interpolation::perspective;
+    bool cull_back_faces = true;
+    bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
+};
+
+// What became of the work: every count the lab reports.
+struct PipelineCounts {
+    std::size_t objects_culled = 0;  // models skipped whole by their bounding box
+    std::size_t faces = 0;           // faces that reached the vertex stage
+    std::size_t back_faces = 0;      // culled as facing away
+    std::size_t outside = 0;         // nothing left after clipping
+    std::size_t clipped = 0;         // cut by at least one plane
+    std::size_t drawn = 0;           // triangles rasterized (a clipped face may give several)
+    std::size_t refused = 0;         // refused by the rasterizer (beyond 2^22 pixels, NaN)
+    std::size_t fragments = 0;       // pixels that passed the depth test and were shaded
+    PipelineCounts& operator+=(const PipelineCounts& o);
+};
+
+// The per-triangle constants the per-pixel step needs, computed once after
+// the viewport transform (the "triangle setup" of a GPU).
+template <Varyings V>
+struct TriangleSetup {
+    rl::vec3 window[3];          // x, y in pixels, z the window depth in [0, 1]
+    V vertex[3];                 // the varyings at the three vertices
+    float inverse_w[3];          // 1 / w (all 1 for affine interpolation)
+    V over_w[3];                 // varyings / w
+    V d_over_w_dx, d_over_w_dy;  // screen derivatives of sum(b_i varyings_i / w_i) ...
+    float d_inverse_w_dx = 0, d_inverse_w_dy = 0;  // ... and of sum(b_i / w_i)
+    int face = 0;                                  // the mesh face it came from
+};
+
+// One pixel reaching the per-pixel stage.
+template <Varyings V>
+struct Fragment {
+    int x, y;
+    float depth;
+    V varyings;
+    float inverse_w;  // interpolated 1 / w at this pixel
+    const TriangleSetup<V>* triangle;
+    int face() const { return triangle->face; }
+    // How the varyings change per pixel to the right (d_dx) and up (d_dy):
+    // exact for either interpolation, from the quotient rule on
+    // varyings = (varyings / w) / (1 / w), both of which are linear on screen.
+    V d_dx() const {
+        return (triangle->d_over_w_dx + varyings * -triangle->d_inverse_w_dx) * (1 / inverse_w);
+    }
+    V d_dy() const {
+        return (triangle->d_over_w_dy + varyings * -triangle->d_inverse_w_dy) * (1 / inverse_w);
+    }
+};
+
+// Back-face test in clip space, before the divide: the sign of det[x y w]
+// is the sign of the volume of the tetrahedron (eye, v0, v1, v2), so it says
+// which side of the face's plane the eye is on even when some w <= 0, where
+// the window-space area would flip. Positive: counter-clockwise, facing the eye.
+inline float facing(const rl::vec4& a, const rl::vec4& b, const rl::vec4& c) {
+    return rl::dot(rl::vec3{a.x, a.y, a.w},
+                   rl::cross(rl::vec3{b.x, b.y, b.w}, rl::vec3{c.x, c.y, c.w}));
+}
+
+// Whether a box (in model space) lies wholly outside one plane of the
+// frustum of `model_view_projection`: then nothing in it can be seen.
+bool outside_frustum(const Box& box, const rl::mat4& model_view_projection);
+
+// [doc:triangle-setup]
+// Divide, viewport, and the constants of the per-pixel step for one triangle
+// of clip-space vertices.
+template <Varyings V>
+TriangleSetup<V> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c,
+                        Interpolation interpolation, int width, int height, int face) {
+    TriangleSetup<V> t;
+    const ClipVertex<V>* v[3] = {&a, &b, &c};
+    for (int k = 0; k < 3; ++k) {
+        const rl::vec4& p = v[k]->position;
+        const float inverse_w = 1 / p.w;
+        t.window[k] = rl::ndc_to_window(p.xyz() * inverse_w, width, height);
+        t.vertex[k] = v[k]->varyings;
+        t.inverse_w[k] = interpolation == Interpolation::perspective ? inverse_w : 1.0f;
+        t.over_w[k] = t.vertex[k] * t.inverse_w[k];
+    }
+    // The barycentric weight b_k is linear on screen: b_k = E_k / (2 area),
+    // where E_k is the edge function of the edge opposite vertex k, so
+    // db_k/dx = -(y_j - y_i) / (2 area) and db_k/dy = (x_j - x_i) / (2 area).
+    const float area2 =
+        triangles::signed_area2({{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}});
+    const float inverse_area2 = area2 != 0 ? 1 / area2 : 0.0f;
+    for (int k = 0; k < 3; ++k) {
+        const rl::vec3 &i = t.window[(k + 1) % 3], &j = t.window[(k + 2) % 3];
+        const float db_dx = (i.y - j.y) * inverse_area2, db_dy = (j.x - i.x) * inverse_area2;
+        t.d_over_w_dx = t.d_over_w_dx + t.over_w[k] * db_dx;
+        t.d_over_w_dy = t.d_over_w_dy + t.over_w[k] * db_dy;
+        t.d_inverse_w_dx += t.inverse_w[k] * db_dx;
+        t.d_inverse_w_dy += t.inverse_w[k] * db_dy;
+    }
+    t.face = face;
+    return t;
+}
+// [/doc:triangle-setup]
+
+// [doc:draw-setup]
+// Rasterizes one set-up triangle: lesson 02's edge-function rasterizer,
+// lesson 03's early depth test (window depth is linear on screen, so it is
+// interpolated with the plain weights), then the varyings from the weights
+// divided by w, then the per-pixel stage. Returns false if refused.
+template <Varyings V, class PixelStage>
+bool rasterize_setup(const TriangleSetup<V>& t, zbuffer::Frame& frame, PixelStage& pixel_stage,
+                     std::size_t& fragments) {
+    const triangles::Triangle2 screen{{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}};
+    const int width = frame.colour.width(), height = frame.colour.height();
+    return triangles::rasterize_edge(screen, width, height, [&](int x, int y, rl::vec3 b) {
+        const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
+        if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
+        // Linear on screen: b . (1/w) and b . (varyings/w); their ratio is
+        // the varyings at the surface point this pixel shows.
+        const float inverse_w = b.x * t.inverse_w[0] + b.y * t.inverse_w[1] + b.z * t.inverse_w[2];
+        const V over_w = t.over_w[0] * b.x + t.over_w[1] * b.y + t.over_w[2] * b.z;
+        const Fragment<V> fragment{x, y, z, over_w * (1 / inverse_w), inverse_w, &t};
+        frame.colour.at(x, y) = pixel_stage(fragment);
+        ++fragments;
+    });
+}
+// [/doc:draw-setup]
+
+// [doc:draw-triangle]
+// One face through every stage after the vertex stage.
+template <Varyings V, class PixelStage>
+void draw_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& planes,
+                   const PipelineOptions& options, zbuffer::Frame& frame, PixelStage& pixel_stage,
+                   int face, PipelineCounts& counts) {
+    ++counts.faces;
+    if (options.cull_back_faces && facing(v[0].position, v[1].position, v[2].position) <= 0) {
+        ++counts.back_faces;
+        return;
+    }
+    const int width = frame.colour.width(), height = frame.colour.height();
+    const auto draw = [&](const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c) {
+        const TriangleSetup<V> t = set_up(a, b, c, options.interpolation, width, height, face);
+        const bool ok = rasterize_setup(t, frame, pixel_stage, counts.fragments);
+        ++(ok ? counts.drawn : counts.refused);
+    };
+    const rl::vec4 positions[3] = {v[0].position, v[1].position, v[2].position};
+    if (inside_all(planes, positions)) return draw(v[0], v[1], v[2]);
+    const ClipPolygon<V> polygon = clip_triangle(v, planes);
+    if (polygon.size < 3) {
+        ++counts.outside;
+        return;
+    }
+    ++counts.clipped;
+    for (int i = 1; i + 1 < polygon.size; ++i)  // a convex polygon as a fan of triangles
+        draw(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
+             polygon.vertices[static_cast<std::size_t>(i + 1)]);
+}
+// [/doc:draw-triangle]
+
+// Every face of a mesh: vertex_stage(face, corner) -> ClipVertex<V> for each
+// corner, then draw_triangle. The caller does the object-level culling
+// (outside_frustum), since only it knows the model's box.
+template <Varyings V, class VertexStage, class PixelStage>
+PipelineCounts draw_mesh(const rl::Mesh& mesh, zbuffer::Frame& frame,
+                         const PipelineOptions& options, VertexStage&& vertex_stage,
+                         PixelStage&& pixel_stage) {
+    PipelineCounts counts;
+    const ClipPlanes planes =
+        clip_planes(options.clip, frame.colour.width(), frame.colour.height());
+    int index = 0;
+    for (const rl::Triangle& face : mesh.triangles) {
+        const std::array<ClipVertex<V>, 3> v = {vertex_stage(face, 0), vertex_stage(face, 1),
+                                                vertex_stage(face, 2)};
+        draw_triangle(v, planes, options, frame, pixel_stage, index++, counts);
+    }
+    return counts;
+}
+
+}  // namespace perspective

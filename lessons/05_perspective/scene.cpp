@@ -1,0 +1,114 @@
+#include "scene.hpp"
+
+#include "02_triangles/flat_shading.hpp"
+#include "04_textures/textured.hpp"
+#include "rasterlab/textures.hpp"
+
+namespace perspective {
+
+const char* name(LodMethod method) {
+    switch (method) {
+        case LodMethod::pixel:
+            return "pixel";
+        case LodMethod::triangle:
+            return "triangle";
+    }
+    return "?";
+}
+
+Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
+                 std::vector<std::string>& warnings) {
+    rl::Mesh mesh = rl::load_obj(path, &warnings);
+    rl::Texture diffuse = rl::load_texture(mesh, 0, rl::TextureRole::diffuse, warnings);
+    std::string texture_name =
+        diffuse.is_default ? "a plain default" : diffuse.source.filename().string();
+    const Box box = bounds(mesh, rl::mat4::identity());
+    return {std::move(mesh), transform, box, textures::MipChain(diffuse.image),
+            std::move(texture_name)};
+}
+
+// [doc:default-scene]
+std::vector<Model> default_scene(std::vector<std::string>& warnings) {
+    std::vector<Model> models;
+    models.push_back(load_model(rl::project_model("floor"),
+                                rl::compose({.scale = {2.2f, 2.2f, 2.2f}}), warnings));
+    models.push_back(load_model(rl::project_model("crate"),  // edge 1.1: its base on y = 0
+                                rl::compose({.translation = {-0.9f, 0.55f, 0.5f},
+                                             .rotation = rl::axis_angle({0, 1, 0}, 30)}),
+                                warnings));
+    models.push_back(load_model(rl::project_model("globe"),  // radius 0.9, resting on the floor
+                                rl::compose({.translation = {1.0f, 0.9f, -0.6f},
+                                             .rotation = rl::axis_angle({0, 1, 0}, -60)}),
+                                warnings));
+    return models;
+}
+// [/doc:default-scene]
+
+Box scene_bounds(const std::vector<Model>& models) {
+    Box box;
+    for (const Model& model : models) box.add(bounds(model.mesh, model.transform));
+    return box;
+}
+
+namespace {
+
+rl::vec2 uv_of(const rl::Mesh& mesh, const rl::Triangle& face, int corner) {
+    const int t = face.corners[static_cast<std::size_t>(corner)].uv;
+    return t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{};
+}
+
+// Lesson 02's flat Lambert term of every face, in world space.
+std::vector<float> face_light(const Model& model, const RenderOptions& options) {
+    std::vector<float> light(model.mesh.triangles.size(), 1.0f);
+    if (!options.lighting) return light;
+    for (std::size_t i = 0; i < light.size(); ++i) {
+        rl::vec3 world[3];
+        for (int k = 0; k < 3; ++k)
+            world[k] = (model.transform *
+                        rl::extend(model.mesh.position(model.mesh.triangles[i], k), 1.0f))
+                           .xyz();
+        light[i] =
+            triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), options.light);
+    }
+    return light;
+}
+
+}  // namespace
+
+// [doc:render-model]
+PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
+                      const RenderOptions& options, zbuffer::Frame& frame) {
+    const int width = frame.colour.width(), height = frame.colour.height();
+    const rl::mat4 view_proj =
+        view_projection(camera, static_cast<float>(width) / static_cast<float>(height));
+    PipelineCounts counts;
+    for (const Model& model : models) {
+        const rl::mat4 mvp = view_proj * model.transform;
+        if (options.pipeline.cull_objects && outside_frustum(model.box, mvp)) {
+            ++counts.objects_culled;
+            continue;
+        }
+        const std::vector<float> light = face_light(model, options);
+        const auto vertex_stage = [&](const rl::Triangle& face, int corner) {
+            return ClipVertex<rl::vec2>{mvp * rl::extend(model.mesh.position(face, corner), 1.0f),
+                                        uv_of(model.mesh, face, corner)};
+        };
+        const auto pixel_stage = [&](const Fragment<rl::vec2>& f) {
+            textures::UvDerivatives d{f.d_dx(), f.d_dy()};
+            if (options.lod == LodMethod::triangle) {  // lesson 04's estimate, one per triangle
+                const rl::vec2 window[3] = {f.triangle->window[0].xy(), f.triangle->window[1].xy(),
+                                            f.triangle->window[2].xy()};
+                d = textures::affine_derivatives(window, f.triangle->vertex);
+            }
+            const rl::vec4 c = textures::sample(model.texture, f.varyings, d, options.sampler);
+            const float shade = light[static_cast<std::size_t>(f.face())];
+            return textures::to_rgba({c.x * shade, c.y * shade, c.z * shade, 1.0f});
+        };
+        counts +=
+            draw_mesh<rl::vec2>(model.mesh, frame, options.pipeline, vertex_stage, pixel_stage);
+    }
+    return counts;
+}
+// [/doc:render-model]
+
+}  // namespace perspective

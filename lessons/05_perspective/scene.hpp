@@ -1,0 +1,58 @@
+// Lesson 05's scene: textured models placed in the world, seen through a
+// perspective camera, lit flat by lesson 02's Lambert term, drawn through the
+// pipeline. Texture level of detail comes from each pixel's UV derivatives
+// (or, to compare, lesson 04's per-triangle estimate).
+//
+//   std::vector<perspective::Model> models = perspective::default_scene(warnings);
+//   perspective::Camera camera = perspective::frame_box(perspective::scene_bounds(models), 50, 1);
+//   zbuffer::Frame frame(800, 800);
+//   perspective::render(models, camera, {}, frame);
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "02_triangles/flat_shading.hpp"
+#include "04_textures/sampling.hpp"
+#include "pipeline.hpp"
+
+namespace perspective {
+
+struct Model {
+    rl::Mesh mesh;
+    rl::mat4 transform;  // model to world
+    Box box;             // around the mesh, in model space
+    textures::MipChain texture;
+    std::string texture_name;  // for messages: the file, or "a plain default"
+};
+
+// Loads an OBJ and its diffuse texture (a plain one, with a warning, when it
+// has none), placed by `transform`.
+Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
+                 std::vector<std::string>& warnings);
+
+// The program's default: the floor (scaled 2.2x), the crate standing on it and
+// the globe beside it, all from obj/.
+std::vector<Model> default_scene(std::vector<std::string>& warnings);
+
+Box scene_bounds(const std::vector<Model>& models);
+
+// Where the mip level comes from: each pixel's own UV derivatives (exact
+// under perspective), or one affine estimate per triangle as in lesson 04.
+enum class LodMethod { pixel, triangle };
+inline constexpr std::array<LodMethod, 2> kLodMethods = {LodMethod::pixel, LodMethod::triangle};
+const char* name(LodMethod method);
+
+struct RenderOptions {
+    PipelineOptions pipeline;
+    textures::SamplerState sampler{textures::Filter::trilinear, textures::Wrap::repeat};
+    LodMethod lod = LodMethod::pixel;
+    rl::vec3 light = triangles::kDefaultLight;  // towards the light, world space
+    bool lighting = true;
+};
+
+// Draws every model into the frame (width / height is the aspect ratio).
+PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
+                      const RenderOptions& options, zbuffer::Frame& frame);
+
+}  // namespace perspective
