@@ -94,10 +94,10 @@ std::optional<Trs> decompose(const mat4& m, float tolerance) {
 
 std::optional<mat4> look_at(vec3 eye, vec3 target, vec3 up) {
     const vec3 towards = target - eye;
-    if (!(length(towards) > 0)) return std::nullopt;
-    const vec3 f = normalize(towards);
-    const vec3 side = cross(f, up);
-    if (!(length(side) > 1e-6f * length(up))) return std::nullopt;  // up along the view
+    if (towards == vec3{}) return std::nullopt;
+    const vec3 f = normalize(towards), up_direction = normalize(up);
+    const vec3 side = cross(f, up_direction);
+    if (!(length(side) > 1e-6f)) return std::nullopt;  // up along the view (or zero, or NaN)
     const vec3 s = normalize(side), u = cross(s, f);
     return mat4{{vec4{s.x, s.y, s.z, -dot(s, eye)}, vec4{u.x, u.y, u.z, -dot(u, eye)},
                  vec4{-f.x, -f.y, -f.z, dot(f, eye)}, vec4{0, 0, 0, 1}}};

@@ -19,6 +19,16 @@ void check(const Camera& camera) {
         throw std::invalid_argument(
             "--eye/--target/--up: the eye must differ from the target, and up must not be "
             "parallel to the viewing direction");
+    // Far * near and the eye's distance enter the matrices: past about 1e19
+    // they overflow a float, and every vertex would become infinite or NaN.
+    const rl::mat4 m = view_projection(camera, 1.0f);
+    for (const rl::vec4& row : m.rows)
+        for (int i = 0; i < 4; ++i)
+            if (!std::isfinite(row[static_cast<std::size_t>(i)]))
+                throw std::invalid_argument(
+                    "--eye/--near/--far: the camera's matrices overflow a float (near * far "
+                    "or the eye's distance from the origin is beyond about 1e38); scale the "
+                    "scene down");
 }
 
 rl::mat4 view_projection(const Camera& camera, float aspect) {

@@ -2,8 +2,10 @@
 // and the usual arithmetic written once for every size.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <ostream>
 
 namespace rl {
@@ -148,10 +150,17 @@ T length(const Vec<N, T>& v) {
 
 // Unit vector in v's direction; the zero vector stays zero rather than
 // turning into NaNs, so a degenerate normal shows up as black, not garbage.
+// A vector whose squared length overflows (components past 1e19 in float)
+// or underflows (below 1e-19) is first scaled by its largest component.
 template <std::size_t N, typename T>
 Vec<N, T> normalize(const Vec<N, T>& v) {
     const T len = length(v);
-    return len > T{0} ? v / len : v;
+    if (len > std::numeric_limits<T>::min() && len <= std::numeric_limits<T>::max()) return v / len;
+    T largest{};
+    for (std::size_t i = 0; i < N; ++i) largest = std::max(largest, std::abs(v[i]));
+    if (!(largest > T{0}) || !(largest <= std::numeric_limits<T>::max())) return v;
+    const Vec<N, T> scaled = v / largest;
+    return scaled / length(scaled);
 }
 
 template <std::size_t N, typename T>
