@@ -206,6 +206,8 @@ def main():
     parser.add_argument("--svg", type=pathlib.Path, required=True)
     parser.add_argument("--table", type=pathlib.Path, help="Markdown table of the CSV")
     parser.add_argument("--columns", help="columns of the table (default: all)")
+    parser.add_argument("--where", action="append", default=[], metavar="COLUMN=VALUE",
+                        help="draw and tabulate only the rows with this value (repeatable)")
     parser.add_argument("--xticks-at-data", action="store_true",
                         help="one x tick at each value the data has (sizes, distances)")
     options = parser.parse_args()
@@ -217,9 +219,13 @@ def main():
     import matplotlib.pyplot as plt
 
     with options.csv.open() as f:
-        rows = list(csv.DictReader(f))
+        all_rows = list(csv.DictReader(f))
+    rows = all_rows
+    for condition in options.where:
+        column, _, value = condition.partition("=")
+        rows = [r for r in rows if r.get(column) == value]
     if not rows:
-        sys.exit(f"{options.csv}: no rows")
+        sys.exit(f"{options.csv}: no rows" + (f" with {', '.join(options.where)}" if options.where else ""))
     if options.series:
         draw_lines(plt, rows, options)
         return
