@@ -2,15 +2,15 @@
 // x and y in [-1, 1] stretched over the image. Lesson 05 replaces it.
 #pragma once
 
-#include "rasterlab/vec.hpp"
+#include "rasterlab/transform.hpp"
 
 namespace lines {
 
 // Model (x, y) to window coordinates: (-1, -1) is the image's bottom-left
 // corner, (1, 1) its top-right corner; z is carried along unchanged.
 inline rl::vec3 orthographic_to_window(rl::vec3 p, int width, int height) {
-    return {(p.x + 1.0f) * 0.5f * static_cast<float>(width),
-            (p.y + 1.0f) * 0.5f * static_cast<float>(height), p.z};
+    const rl::vec3 window = rl::ndc_to_window(p, width, height);  // the viewport, written once
+    return {window.x, window.y, p.z};
 }
 
 }  // namespace lines

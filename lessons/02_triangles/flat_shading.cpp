@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "01_lines/viewport.hpp"
+#include "05_perspective/pipeline.hpp"
 
 namespace triangles {
 
@@ -18,29 +18,32 @@ rl::Rgba lit(rl::Rgba colour, float light) {
     return {scale(colour.r), scale(colour.g), scale(colour.b), 255};
 }
 
+rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Triangle& face, const FlatOptions& options) {
+    const rl::vec3 p0 = mesh.position(face, 0), p1 = mesh.position(face, 1),
+                   p2 = mesh.position(face, 2);
+    return lit(options.colour, lambert(rl::cross(p1 - p0, p2 - p0), options.light_direction));
+}
+
 // [doc:flat-shading]
 DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options) {
-    DrawCounts stats;
-    for (const rl::Triangle& face : mesh.triangles) {
-        Triangle2 screen;
-        rl::vec3 world[3];
-        for (int k = 0; k < 3; ++k) {
-            world[k] = mesh.position(face, k);
-            screen.v[k] =
-                lines::orthographic_to_window(world[k], image.width(), image.height()).xy();
-        }
-        // Counter-clockwise on screen means facing the viewer (who looks down -z).
-        if (options.cull_back_faces && signed_area2(screen) <= 0) {
-            ++stats.culled;
-            continue;
-        }
-        const rl::vec3 normal = rl::cross(world[1] - world[0], world[2] - world[0]);
-        const rl::Rgba colour = lit(options.colour, lambert(normal, options.light_direction));
-        const bool ok = rasterize(options.method, screen, image.width(), image.height(),
-                                  [&](int x, int y, rl::vec3) { image.at(x, y) = colour; });
-        ++(ok ? stats.drawn : stats.refused);
-    }
-    return stats;
+    std::vector<rl::Rgba> colours;  // one per face: flat shading
+    for (const rl::Triangle& face : mesh.triangles)
+        colours.push_back(face_colour(mesh, face, options));
+    perspective::PipelineOptions pipeline;
+    pipeline.clip = perspective::ClipMode::none;  // orthographic: w = 1 everywhere
+    pipeline.interpolation = perspective::Interpolation::affine;
+    pipeline.cull_back_faces = options.cull_back_faces;
+    pipeline.raster = options.method;
+    const perspective::PipelineCounts counts = perspective::draw_mesh<float>(
+        mesh, {image}, pipeline,
+        [&](const rl::Triangle& face, int corner) {  // the vertex stage: where the corner goes
+            return perspective::ClipVertex<float>{
+                perspective::orthographic_clip(mesh.position(face, corner)), 0.0f};
+        },
+        [&](const perspective::Fragment<float>& fragment) {  // the per-pixel stage: its colour
+            return colours[static_cast<std::size_t>(fragment.face())];
+        });
+    return {counts.drawn, counts.back_faces, counts.refused};
 }
 // [/doc:flat-shading]
 

@@ -28,6 +28,13 @@ float lambert(rl::vec3 normal, rl::vec3 to_light);
 // A colour scaled by an amount of light in [0, 1] (alpha stays opaque).
 rl::Rgba lit(rl::Rgba colour, float light);
 
+// A face's colour: the surface colour lit by Lambert's law with the face's
+// own normal.
+rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Triangle& face, const FlatOptions& options);
+
+// Draws every face through the pipeline (lesson 05 explains it in full; here
+// the camera is orthographic and there is no depth test: the last face drawn
+// wins), back faces culled, each face in its own flat colour.
 DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options);
 
 // The classic first picture: three triangles (red, white, green) in a

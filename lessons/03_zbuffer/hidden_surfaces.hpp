@@ -9,6 +9,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include "05_perspective/pipeline.hpp"
+#include "depth_test.hpp"
 #include "scene.hpp"
 
 namespace zbuffer {
@@ -25,30 +27,9 @@ struct Frame {
     std::size_t refused = 0;  // triangles the rasterizer refused (see triangles::rasterize)
     Frame(int width, int height, rl::Rgba background = rl::kBackground)
         : colour(width, height, background), ids(width, height, -1), depth(width, height, 1.0f) {}
+    // The colour and depth images, as the pipeline draws into them.
+    perspective::RenderTarget target() { return {colour, &depth}; }
 };
-
-// [doc:depth-test]
-// The depth test `less`: when z is nearer than what the buffer holds at
-// (x, y), store it and return true; otherwise leave the buffer alone.
-inline bool passes_depth_test(rl::FloatImage& depth, int x, int y, float z) {
-    float& nearest = depth.at(x, y);
-    if (!(z < nearest)) return false;
-    nearest = z;
-    return true;
-}
-
-// The depth a fragment carries into the test: window depth interpolated
-// with the rasterizer's weights, kept within the range of the triangle's
-// three vertex depths. A convex combination never leaves that range, but
-// float weights that sum to 1 - 2^-24 do: a triangle lying exactly on the far
-// plane (z = 1 at every vertex) would pass `less` against a cleared buffer in
-// about a fifth of its pixels. Clamped, it passes in none.
-inline float interpolate_depth(rl::vec3 weights, float z0, float z1, float z2) {
-    const float z = triangles::interpolate(weights, z0, z1, z2);
-    return std::clamp(z, std::min({z0, z1, z2}), std::max({z0, z1, z2}));
-}
-
-// [/doc:depth-test]
 
 // Draws every triangle in the given order with no depth test: the last one wins.
 void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame);

@@ -27,12 +27,11 @@ struct Placement {
     rl::vec3 offset{};
 };
 
-// Orthographic, as in lessons 01 and 02: x, y in [-1, 1] fill the image, and
-// the viewer looks down -z, so window depth is (1 - z) / 2: z = 1 is nearest.
-rl::vec3 to_window(rl::vec3 model, int width, int height);
-
-// Loads and places the models, culls back faces (counted in `culled`),
-// shades each face flat (lesson 02's Lambert) and numbers the faces in order.
+// Loads and places the models, and takes each face through the first half
+// of the pipeline (lesson 05): orthographic as in lessons 01 and 02 (x, y in
+// [-1, 1] fill the image; the viewer looks down -z, so window depth is
+// (1 - z) / 2: z = 1 is nearest), back faces culled (added to `culled`).
+// Each face is shaded flat (lesson 02's Lambert) and numbered in order.
 std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements, int width,
                                        int height, std::vector<std::string>* warnings = nullptr,
                                        std::size_t* culled = nullptr);

@@ -1,6 +1,7 @@
 #include "textured.hpp"
 
 #include "02_triangles/flat_shading.hpp"
+#include "05_perspective/pipeline.hpp"
 
 namespace textures {
 
@@ -14,57 +15,71 @@ UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]) {
 }
 // [/doc:affine-derivatives]
 
+UvDerivatives affine_derivatives(const perspective::TriangleSetup<rl::vec2>& t) {
+    const rl::vec2 window[3] = {t.window[0].xy(), t.window[1].xy(), t.window[2].xy()};
+    return affine_derivatives(window, t.vertex);
+}
+
+namespace {
+
+rl::vec3 placed(const rl::Mesh& mesh, const rl::Triangle& face, int corner,
+                const TexturedOptions& options) {
+    return options.rotation * mesh.position(face, corner) * options.scale;
+}
+
+rl::vec2 texture_coordinates(const rl::Mesh& mesh, const rl::Triangle& face, int corner,
+                             const TexturedOptions& options) {
+    const int t = face.corners[static_cast<std::size_t>(corner)].uv;
+    return (t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{}) * options.uv_scale +
+           options.uv_offset;
+}
+
+}  // namespace
+
 TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
                            const TexturedOptions& options, int width, int height) {
     TexturedFace out;
     for (int k = 0; k < 3; ++k) {
-        out.world[k] = options.rotation * mesh.position(face, k) * options.scale;
-        out.window[k] = zbuffer::to_window(out.world[k], width, height);
-        const int t = face.corners[static_cast<std::size_t>(k)].uv;
-        out.uv[k] =
-            (t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{}) * options.uv_scale +
-            options.uv_offset;
+        out.world[k] = placed(mesh, face, k, options);
+        out.window[k] =
+            rl::ndc_to_window(perspective::orthographic_clip(out.world[k]).xyz(), width, height);
+        out.uv[k] = texture_coordinates(mesh, face, k, options);
     }
-    // Not "area > 0": a face whose area is NaN (vertices too far out for a
-    // float) is not culled but passed on, for the rasterizer to refuse and count.
-    out.front = !(triangles::signed_area2(out.screen()) <= 0);
+    out.front = !(perspective::facing(perspective::orthographic_clip(out.world[0]),
+                                      perspective::orthographic_clip(out.world[1]),
+                                      perspective::orthographic_clip(out.world[2])) <= 0);
     return out;
 }
 
 triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
                                     const MipChain& texture, const TexturedOptions& options) {
-    const int width = frame.colour.width(), height = frame.colour.height();
-    triangles::DrawCounts counts;
-    for (const rl::Triangle& triangle : mesh.triangles) {
-        const TexturedFace face = textured_face(mesh, triangle, options, width, height);
-        if (!face.front) {
-            ++counts.culled;
-            continue;
-        }
-        const rl::vec3* world = face.world;
-        const triangles::Triangle2 tri = face.screen();
-        const float shade =
-            options.lighting
-                ? triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]),
-                                     triangles::kDefaultLight)
-                : 1.0f;
-        const UvDerivatives derivatives = affine_derivatives(tri.v, face.uv);
-        // [doc:textured-pixel]
-        const bool drawn =
-            triangles::rasterize_edge(tri, width, height, [&](int x, int y, rl::vec3 b) {
-                const float z = zbuffer::interpolate_depth(b, face.window[0].z, face.window[1].z,
-                                                           face.window[2].z);
-                if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
-                const rl::vec2 at = triangles::interpolate(b, face.uv[0], face.uv[1],
-                                                           face.uv[2]);  // affine: exact here
-                rl::vec4 colour = sample(texture, at, derivatives, options.sampler);
-                colour = {colour.x * shade, colour.y * shade, colour.z * shade, 1.0f};
-                frame.colour.at(x, y) = to_rgba(colour);
-            });
-        // [/doc:textured-pixel]
-        ++(drawn ? counts.drawn : counts.refused);
+    std::vector<float> shade(mesh.triangles.size(), 1.0f);  // lesson 02's Lambert, per face
+    for (std::size_t i = 0; options.lighting && i < shade.size(); ++i) {
+        const rl::Triangle& face = mesh.triangles[i];
+        const rl::vec3 p0 = placed(mesh, face, 0, options), p1 = placed(mesh, face, 1, options),
+                       p2 = placed(mesh, face, 2, options);
+        shade[i] = triangles::lambert(rl::cross(p1 - p0, p2 - p0), triangles::kDefaultLight);
     }
-    return counts;
+    perspective::PipelineOptions pipeline;
+    pipeline.clip = perspective::ClipMode::none;  // orthographic: w = 1, nothing to cut
+    pipeline.interpolation = perspective::Interpolation::affine;  // exact when w = 1
+    // [doc:textured-pixel]
+    const auto vertex_stage = [&](const rl::Triangle& face, int corner) {
+        return perspective::ClipVertex<rl::vec2>{
+            perspective::orthographic_clip(placed(mesh, face, corner, options)),
+            texture_coordinates(mesh, face, corner, options)};
+    };
+    const auto pixel_stage = [&](const perspective::Fragment<rl::vec2>& f) {
+        // The derivatives are constant over the triangle (affine mapping).
+        rl::vec4 colour =
+            sample(texture, f.varyings, affine_derivatives(*f.triangle), options.sampler);
+        const float s = shade[static_cast<std::size_t>(f.face())];
+        return to_rgba({colour.x * s, colour.y * s, colour.z * s, 1.0f});
+    };
+    // [/doc:textured-pixel]
+    const perspective::PipelineCounts counts =
+        perspective::draw_mesh<rl::vec2>(mesh, frame.target(), pipeline, vertex_stage, pixel_stage);
+    return {counts.drawn, counts.back_faces, counts.refused};
 }
 
 }  // namespace textures

@@ -82,7 +82,7 @@ UvFrame draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera, i
         for (int k = 0; k < 3; ++k)
             v[static_cast<std::size_t>(k)] = {vp * rl::extend(rl::cast<float>(scene[i].p[k]), 1.0f),
                                               rl::cast<float>(scene[i].uv[k])};
-        draw_triangle(v, planes, options, frame, pixel_stage, static_cast<int>(i), counts);
+        draw_triangle(v, planes, options, frame.target(), pixel_stage, static_cast<int>(i), counts);
     }
     out.fragments = counts.fragments;
     return out;

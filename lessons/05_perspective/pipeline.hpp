@@ -9,11 +9,13 @@
 // face into a clip-space position and the attributes ("varyings") to carry
 // to the pixels; the per-pixel stage turns a Fragment (the interpolated
 // varyings, their screen derivatives on request) into a colour. Everything
-// between is here, once. Derivations: docs/05_perspective.md.
+// between is here, once, and every drawing lesson goes through it: lessons
+// 02-04 with their orthographic camera (w = 1, nothing to clip), lesson 05
+// and later with a perspective one. Derivations: docs/05_perspective.md.
 //
 //   const rl::mat4 mvp = perspective::view_projection(camera, aspect) * model;
 //   perspective::draw_mesh<rl::vec2>(
-//       mesh, frame, options,
+//       mesh, {frame.colour, &frame.depth}, options,
 //       [&](const rl::Triangle& face, int corner) {   // vertex stage
 //           return perspective::ClipVertex<rl::vec2>{
 //               mvp * rl::extend(mesh.position(face, corner), 1.0f), uv_of(face, corner)};
@@ -27,7 +29,7 @@
 #include <cstddef>
 
 #include "02_triangles/raster.hpp"
-#include "03_zbuffer/hidden_surfaces.hpp"
+#include "03_zbuffer/depth_test.hpp"
 #include "camera.hpp"
 #include "clipping.hpp"
 #include "rasterlab/mesh.hpp"
@@ -48,6 +50,15 @@ struct PipelineOptions {
     Interpolation interpolation = Interpolation::perspective;
     bool cull_back_faces = true;
     bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
+    triangles::RasterMethod raster = triangles::RasterMethod::edge;  // lesson 02's three
+};
+
+// Where the pipeline draws: a colour image and a depth image of the same
+// size for the depth test, or none (the last triangle drawn wins, as in
+// lesson 02).
+struct RenderTarget {
+    rl::Image& colour;
+    rl::FloatImage* depth = nullptr;
 };
 
 // What became of the work: every count the lab reports.
@@ -67,9 +78,10 @@ struct PipelineCounts {
 // the viewport transform (the "triangle setup" of a GPU).
 template <Varyings V>
 struct TriangleSetup {
-    rl::vec3 window[3];          // x, y in pixels, z the window depth in [0, 1]
-    V vertex[3];                 // the varyings at the three vertices
-    float inverse_w[3];          // 1 / w (all 1 for affine interpolation)
+    rl::vec3 window[3];  // x, y in pixels, z the window depth in [0, 1]
+    V vertex[3];         // the varyings at the three vertices
+    float inverse_w[3];  // 1 / w (all 1 for affine interpolation)
+    bool perspective_correct = true;
     V over_w[3];                 // varyings / w
     V d_over_w_dx, d_over_w_dy;  // screen derivatives of sum(b_i varyings_i / w_i) ...
     float d_inverse_w_dx = 0, d_inverse_w_dy = 0;  // ... and of sum(b_i / w_i)
@@ -125,6 +137,7 @@ TriangleSetup<V> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const Cl
         t.inverse_w[k] = interpolation == Interpolation::perspective ? inverse_w : 1.0f;
         t.over_w[k] = t.vertex[k] * t.inverse_w[k];
     }
+    t.perspective_correct = interpolation == Interpolation::perspective;
     // The barycentric weight b_k is linear on screen: b_k = E_k / (2 area),
     // where E_k is the edge function of the edge opposite vertex k, so
     // db_k/dx = -(y_j - y_i) / (2 area) and db_k/dy = (x_j - x_i) / (2 area).
@@ -145,48 +158,50 @@ TriangleSetup<V> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const Cl
 // [/doc:triangle-setup]
 
 // [doc:draw-setup]
-// Rasterizes one set-up triangle: lesson 02's edge-function rasterizer,
-// lesson 03's early depth test (window depth is linear on screen, so it is
-// interpolated with the plain weights), then the varyings from the weights
-// divided by w, then the per-pixel stage. Returns false if refused.
+// Rasterizes one set-up triangle: lesson 02's rasterizer, lesson 03's early
+// depth test (window depth is linear on screen, so it is interpolated with
+// the plain weights), then the varyings, then the per-pixel stage. Under
+// perspective the varyings are b . (varyings / w) divided by b . (1 / w);
+// affine interpolation is b . varyings. Returns false if refused.
 template <Varyings V, class PixelStage>
-bool rasterize_setup(const TriangleSetup<V>& t, zbuffer::Frame& frame, PixelStage& pixel_stage,
-                     std::size_t& fragments) {
+bool rasterize_setup(const TriangleSetup<V>& t, RenderTarget target, triangles::RasterMethod method,
+                     PixelStage& pixel_stage, std::size_t& fragments) {
     const triangles::Triangle2 screen{{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}};
-    const int width = frame.colour.width(), height = frame.colour.height();
-    return triangles::rasterize_edge(screen, width, height, [&](int x, int y, rl::vec3 b) {
+    const int width = target.colour.width(), height = target.colour.height();
+    return triangles::rasterize(method, screen, width, height, [&](int x, int y, rl::vec3 b) {
         const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
-        if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
-        // Linear on screen: b . (1/w) and b . (varyings/w); their ratio is
-        // the varyings at the surface point this pixel shows.
-        const float inverse_w = b.x * t.inverse_w[0] + b.y * t.inverse_w[1] + b.z * t.inverse_w[2];
+        if (target.depth && !zbuffer::passes_depth_test(*target.depth, x, y, z)) return;
         const V over_w = t.over_w[0] * b.x + t.over_w[1] * b.y + t.over_w[2] * b.z;
-        const Fragment<V> fragment{x, y, z, over_w * (1 / inverse_w), inverse_w, &t};
-        frame.colour.at(x, y) = pixel_stage(fragment);
+        float inverse_w = 1;
+        V varyings = over_w;
+        if (t.perspective_correct) {
+            inverse_w = b.x * t.inverse_w[0] + b.y * t.inverse_w[1] + b.z * t.inverse_w[2];
+            varyings = over_w * (1 / inverse_w);
+        }
+        target.colour.at(x, y) = pixel_stage(Fragment<V>{x, y, z, varyings, inverse_w, &t});
         ++fragments;
     });
 }
 // [/doc:draw-setup]
 
-// [doc:draw-triangle]
-// One face through every stage after the vertex stage.
-template <Varyings V, class PixelStage>
-void draw_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& planes,
-                   const PipelineOptions& options, zbuffer::Frame& frame, PixelStage& pixel_stage,
-                   int face, PipelineCounts& counts) {
+// [doc:assemble-triangle]
+// One face from clip space to window space: back-face cull, clip (a face
+// may become a fan of up to 7 triangles), divide and viewport. Calls
+// emit(TriangleSetup) for each triangle to rasterize.
+template <Varyings V, class Emit>
+void assemble_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& planes,
+                       const PipelineOptions& options, int width, int height, int face,
+                       PipelineCounts& counts, Emit&& emit) {
     ++counts.faces;
+    // Not "culled unless > 0": a face whose sign is NaN goes on, for the
+    // rasterizer to refuse and count.
     if (options.cull_back_faces && facing(v[0].position, v[1].position, v[2].position) <= 0) {
         ++counts.back_faces;
         return;
     }
-    const int width = frame.colour.width(), height = frame.colour.height();
-    const auto draw = [&](const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c) {
-        const TriangleSetup<V> t = set_up(a, b, c, options.interpolation, width, height, face);
-        const bool ok = rasterize_setup(t, frame, pixel_stage, counts.fragments);
-        ++(ok ? counts.drawn : counts.refused);
-    };
     const rl::vec4 positions[3] = {v[0].position, v[1].position, v[2].position};
-    if (inside_all(planes, positions)) return draw(v[0], v[1], v[2]);
+    if (inside_all(planes, positions))
+        return emit(set_up(v[0], v[1], v[2], options.interpolation, width, height, face));
     const ClipPolygon<V> polygon = clip_triangle(v, planes);
     if (polygon.size < 3) {
         ++counts.outside;
@@ -194,28 +209,50 @@ void draw_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& plan
     }
     ++counts.clipped;
     for (int i = 1; i + 1 < polygon.size; ++i)  // a convex polygon as a fan of triangles
-        draw(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
-             polygon.vertices[static_cast<std::size_t>(i + 1)]);
+        emit(set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
+                    polygon.vertices[static_cast<std::size_t>(i + 1)], options.interpolation, width,
+                    height, face));
 }
-// [/doc:draw-triangle]
+// [/doc:assemble-triangle]
 
-// Every face of a mesh: vertex_stage(face, corner) -> ClipVertex<V> for each
-// corner, then draw_triangle. The caller does the object-level culling
+// One face through every stage after the vertex stage.
+template <Varyings V, class PixelStage>
+void draw_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& planes,
+                   const PipelineOptions& options, RenderTarget target, PixelStage& pixel_stage,
+                   int face, PipelineCounts& counts) {
+    assemble_triangle(v, planes, options, target.colour.width(), target.colour.height(), face,
+                      counts, [&](const TriangleSetup<V>& t) {
+                          const bool ok = rasterize_setup(t, target, options.raster, pixel_stage,
+                                                          counts.fragments);
+                          ++(ok ? counts.drawn : counts.refused);
+                      });
+}
+
+// [doc:draw-mesh]
+// Every face of a mesh: vertex_stage(face, corner) -> ClipVertex<V> for
+// each corner, then draw_triangle. The caller does the object-level culling
 // (outside_frustum), since only it knows the model's box.
 template <Varyings V, class VertexStage, class PixelStage>
-PipelineCounts draw_mesh(const rl::Mesh& mesh, zbuffer::Frame& frame,
-                         const PipelineOptions& options, VertexStage&& vertex_stage,
-                         PixelStage&& pixel_stage) {
+PipelineCounts draw_mesh(const rl::Mesh& mesh, RenderTarget target, const PipelineOptions& options,
+                         VertexStage&& vertex_stage, PixelStage&& pixel_stage) {
     PipelineCounts counts;
     const ClipPlanes planes =
-        clip_planes(options.clip, frame.colour.width(), frame.colour.height());
+        clip_planes(options.clip, target.colour.width(), target.colour.height());
     int index = 0;
     for (const rl::Triangle& face : mesh.triangles) {
         const std::array<ClipVertex<V>, 3> v = {vertex_stage(face, 0), vertex_stage(face, 1),
                                                 vertex_stage(face, 2)};
-        draw_triangle(v, planes, options, frame, pixel_stage, index++, counts);
+        draw_triangle(v, planes, options, target, pixel_stage, index++, counts);
     }
     return counts;
+}
+// [/doc:draw-mesh]
+
+// Lessons 01-04's camera as a vertex stage's clip position: x and y in
+// [-1, 1] fill the image, the viewer looks down -z (clip z = -z, so window
+// depth is (1 - z) / 2: z = 1 is nearest), and w = 1: nothing recedes.
+inline rl::vec4 orthographic_clip(rl::vec3 p) {
+    return {p.x, p.y, -p.z, 1.0f};
 }
 
 }  // namespace perspective

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "03_zbuffer/hidden_surfaces.hpp"
 #include "rasterlab/random.hpp"
 
 namespace perspective {
@@ -86,7 +87,7 @@ rl::Grid<int> pipeline_ids(const std::vector<WorldTriangle>& scene, const Camera
         for (int k = 0; k < 3; ++k)
             v[static_cast<std::size_t>(k)] = {vp * rl::extend(rl::cast<float>(scene[i].p[k]), 1.0f),
                                               rl::cast<float>(scene[i].uv[k])};
-        draw_triangle(v, planes, options, frame, pixel_stage, static_cast<int>(i), local);
+        draw_triangle(v, planes, options, frame.target(), pixel_stage, static_cast<int>(i), local);
     }
     if (counts) *counts += local;
     return frame.ids;

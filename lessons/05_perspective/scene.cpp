@@ -94,18 +94,17 @@ PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
                                         uv_of(model.mesh, face, corner)};
         };
         const auto pixel_stage = [&](const Fragment<rl::vec2>& f) {
-            textures::UvDerivatives d{f.d_dx(), f.d_dy()};
-            if (options.lod == LodMethod::triangle) {  // lesson 04's estimate, one per triangle
-                const rl::vec2 window[3] = {f.triangle->window[0].xy(), f.triangle->window[1].xy(),
-                                            f.triangle->window[2].xy()};
-                d = textures::affine_derivatives(window, f.triangle->vertex);
-            }
+            // Each pixel's own derivatives, or lesson 04's affine estimate
+            // from the triangle's corners (the same for the whole triangle).
+            const textures::UvDerivatives d = options.lod == LodMethod::pixel
+                                                  ? textures::UvDerivatives{f.d_dx(), f.d_dy()}
+                                                  : textures::affine_derivatives(*f.triangle);
             const rl::vec4 c = textures::sample(model.texture, f.varyings, d, options.sampler);
             const float shade = light[static_cast<std::size_t>(f.face())];
             return textures::to_rgba({c.x * shade, c.y * shade, c.z * shade, 1.0f});
         };
-        counts +=
-            draw_mesh<rl::vec2>(model.mesh, frame, options.pipeline, vertex_stage, pixel_stage);
+        counts += draw_mesh<rl::vec2>(model.mesh, frame.target(), options.pipeline, vertex_stage,
+                                      pixel_stage);
     }
     return counts;
 }

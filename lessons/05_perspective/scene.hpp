@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "02_triangles/flat_shading.hpp"
+#include "03_zbuffer/hidden_surfaces.hpp"
 #include "04_textures/sampling.hpp"
 #include "pipeline.hpp"
 
