@@ -182,14 +182,28 @@ ClippingScene floor_scene() {
 // ---------------------------------------------------------------- 3. level of detail
 
 // The floor of the default scene (scaled 3x: x, z in [-3, 3], uv = 2 (x/3 + 1),
-// 2 (1 - z/3)), from 0.5 above, looking along it.
+// 2 (1 - z/3)), from 0.5 above, looking along it: as stored (8 x 8 cells,
+// 128 triangles) or as one quad of 2 triangles with the same mapping.
 struct LodScene {
+    std::string name;
     std::vector<Model> models;
     Camera camera;
     int size;
     rl::Image truth;
     rl::Grid<std::uint8_t> scored;
 };
+
+// The floor as two triangles: the same square, the same texture coordinates.
+rl::Mesh two_triangle_floor(const rl::Mesh& floor) {
+    rl::Mesh quad = floor;
+    quad.positions = {{-1, 0, 1}, {1, 0, 1}, {1, 0, -1}, {-1, 0, -1}};
+    quad.uvs = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
+    quad.normals.clear();
+    const auto corner = [](int i) { return rl::Corner{i, i, -1}; };
+    quad.triangles = {{{corner(0), corner(1), corner(2)}, 0},
+                      {{corner(0), corner(2), corner(3)}, 0}};
+    return quad;
+}
 
 rl::dvec2 floor_uv(rl::dvec3 p) {
     return {2 * (p.x / 3 + 1), 2 * (1 - p.z / 3)};
@@ -322,25 +336,33 @@ int main(int argc, char** argv) {
                                              clip_size)
                     ->Unit(benchmark::kMicrosecond);
 
-        // 3. Level of detail on the floor.
+        // 3. Level of detail on the floor, as stored and as two triangles.
         std::vector<std::string> warnings;
-        LodScene lod{{}, {}, options.quick ? 64 : 512, {}, {}};
-        lod.models.push_back(
-            load_model(rl::project_model("floor"), rl::compose({.scale = {3, 3, 3}}), warnings));
-        lod.camera.eye = {0, 0.5f, 3.2f};
-        lod.camera.target = {0, 0.1f, 0};
-        lod.camera.fov_y = 50;
-        lod.camera.near = 0.1f;
-        lod.camera.far = 20;
-        const auto lod_name = [](LodMethod m, textures::Filter f) {
-            return std::string("lod/") + name(m) + "/" + textures::name(f);
+        std::vector<LodScene> lod_scenes(2);
+        lod_scenes[0].name = "floor, 128 triangles";
+        lod_scenes[1].name = "floor, 2 triangles";
+        for (LodScene& lod : lod_scenes) {
+            lod.size = options.quick ? 64 : 512;
+            lod.models.push_back(load_model(rl::project_model("floor"),
+                                            rl::compose({.scale = {3, 3, 3}}), warnings));
+            lod.camera.eye = {0, 0.5f, 3.2f};
+            lod.camera.target = {0, 0.1f, 0};
+            lod.camera.fov_y = 50;
+            lod.camera.near = 0.1f;
+            lod.camera.far = 20;
+        }
+        lod_scenes[1].models[0].mesh = two_triangle_floor(lod_scenes[1].models[0].mesh);
+        const auto lod_name = [](const LodScene& s, LodMethod m, textures::Filter f) {
+            return "lod/" + s.name + "/" + name(m) + "/" + textures::name(f);
         };
         const textures::Filter lod_filters[2] = {textures::Filter::bilinear,
                                                  textures::Filter::trilinear};
-        for (LodMethod m : kLodMethods)
-            for (textures::Filter f : lod_filters)
-                benchmark::RegisterBenchmark(lod_name(m, f).c_str(), draw_lod_case, &lod, m, f)
-                    ->Unit(benchmark::kMicrosecond);
+        for (const LodScene& lod : lod_scenes)
+            for (LodMethod m : kLodMethods)
+                for (textures::Filter f : lod_filters)
+                    benchmark::RegisterBenchmark(lod_name(lod, m, f).c_str(), draw_lod_case, &lod,
+                                                 m, f)
+                        ->Unit(benchmark::kMicrosecond);
 
         const auto timings = rl::lab::run_benchmarks();
 
@@ -380,17 +402,21 @@ int main(int argc, char** argv) {
             }
         }
 
-        floor_footprint(lod, lod.models[0].texture.level(0), options.quick ? 4 : 16);
-        rl::ResultsTable lod_table({"lod", "filter", "ns_per_pixel", "rmse", "scored_pixels"});
-        for (LodMethod m : kLodMethods)
-            for (textures::Filter f : lod_filters) {
-                long scored = 0;
-                const double rmse = scored_rmse(lod, render_floor(lod, m, f), &scored);
-                lod_table.add_row({std::string(name(m)), std::string(textures::name(f)),
-                                   timings.at(lod_name(m, f)).median_ns /
-                                       static_cast<double>(lod.size * lod.size),
-                                   rmse, static_cast<long long>(scored)});
-            }
+        rl::ResultsTable lod_table(
+            {"lod", "filter", "scene", "ns_per_pixel", "rmse", "scored_pixels"});
+        for (LodScene& lod : lod_scenes) {
+            floor_footprint(lod, lod.models[0].texture.level(0), options.quick ? 4 : 16);
+            for (LodMethod m : kLodMethods)
+                for (textures::Filter f : lod_filters) {
+                    long scored = 0;
+                    const double rmse = scored_rmse(lod, render_floor(lod, m, f), &scored);
+                    lod_table.add_row({std::string(name(m)), std::string(textures::name(f)),
+                                       lod.name,
+                                       timings.at(lod_name(lod, m, f)).median_ns /
+                                           static_cast<double>(lod.size * lod.size),
+                                       rmse, static_cast<long long>(scored)});
+                }
+        }
 
         interpolation.write_csv(options.out_dir / "05_interpolation.csv");
         clipping.write_csv(options.out_dir / "05_clipping.csv");
