@@ -39,11 +39,6 @@ rl::Image make_test_card(int width, int height) {
 }
 // [/doc:test-card]
 
-const char* name(Misreading mistake) {
-    constexpr const char* names[] = {"none", "byte-order", "origin"};  // in kMisreadings' order
-    return names[static_cast<int>(mistake)];
-}
-
 rl::Image misread(const rl::Image& image, Misreading mistake) {
     rl::Image out = image;
     if (mistake == Misreading::byte_order)

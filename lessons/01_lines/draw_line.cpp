@@ -5,20 +5,6 @@
 
 namespace lines {
 
-const char* name(LineMethod method) {
-    switch (method) {
-        case LineMethod::parametric:
-            return "parametric";
-        case LineMethod::dda:
-            return "dda";
-        case LineMethod::bresenham:
-            return "bresenham";
-        case LineMethod::wu:
-            return "wu";
-    }
-    return "?";
-}
-
 void blend_pixel(rl::Image& image, int x, int y, rl::Rgba colour, float coverage) {
     if (!image.contains(x, y)) return;
     const float c = std::clamp(coverage, 0.0f, 1.0f);

@@ -6,6 +6,8 @@
 // which clips to the image first. The derivations are in docs/01_lines.md.
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -19,10 +21,16 @@ namespace lines {
 
 enum class LineMethod { parametric, dda, bresenham, wu };
 
-inline constexpr std::array<LineMethod, 4> kLineMethods = {LineMethod::parametric, LineMethod::dda,
-                                                           LineMethod::bresenham, LineMethod::wu};
+inline constexpr std::array<rl::Named<LineMethod>, 4> kLineMethodNames = {
+    {{LineMethod::parametric, "parametric"},
+     {LineMethod::dda, "dda"},
+     {LineMethod::bresenham, "bresenham"},
+     {LineMethod::wu, "wu"}}};
+inline constexpr std::array<LineMethod, 4> kLineMethods = rl::values_of(kLineMethodNames);
 
-const char* name(LineMethod method);
+inline const char* name(LineMethod value) {
+    return rl::name_in(kLineMethodNames, value);
+}
 
 // The pixel that contains a point.
 inline int pixel_of(float coordinate) {

@@ -5,6 +5,8 @@
 // copying a rasterizer. Derivations: docs/02_triangles.md.
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -24,10 +26,15 @@ struct DrawCounts {
 
 enum class RasterMethod { scanline, bbox, edge };
 
-inline constexpr std::array<RasterMethod, 3> kRasterMethods = {
-    RasterMethod::scanline, RasterMethod::bbox, RasterMethod::edge};
+inline constexpr std::array<rl::Named<RasterMethod>, 3> kRasterMethodNames = {
+    {{RasterMethod::scanline, "scanline"},
+     {RasterMethod::bbox, "bbox"},
+     {RasterMethod::edge, "edge"}}};
+inline constexpr std::array<RasterMethod, 3> kRasterMethods = rl::values_of(kRasterMethodNames);
 
-const char* name(RasterMethod method);
+inline const char* name(RasterMethod value) {
+    return rl::name_in(kRasterMethodNames, value);
+}
 
 // Fills the triangle with the chosen method. Returns false when the method
 // refused the triangle: a NaN or infinite vertex, or one farther than

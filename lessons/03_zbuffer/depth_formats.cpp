@@ -4,26 +4,6 @@
 
 namespace zbuffer {
 
-const char* name(DepthFormat format) {
-    switch (format) {
-        case DepthFormat::float_z:
-            return "float-z";
-        case DepthFormat::fixed24:
-            return "fixed24";
-        case DepthFormat::fixed16:
-            return "fixed16";
-        case DepthFormat::reverse_z:
-            return "reverse-z";
-        case DepthFormat::inverse_w:
-            return "inverse-w";
-        case DepthFormat::linear_z:
-            return "linear-w";
-        case DepthFormat::logarithmic:
-            return "log";
-    }
-    return "?";
-}
-
 namespace {
 
 // OpenGL's perspective depth: NDC z = (f + n)/(f - n) - 2fn / ((f - n) w),

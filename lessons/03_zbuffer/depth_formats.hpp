@@ -4,6 +4,8 @@
 // measured precision: docs/03_zbuffer.md.
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <array>
 
 namespace zbuffer {
@@ -18,11 +20,19 @@ enum class DepthFormat {
     logarithmic,  // log(w / near) / log(far / near) as a float
 };
 
-inline constexpr std::array<DepthFormat, 7> kDepthFormats = {
-    DepthFormat::float_z,   DepthFormat::fixed24,  DepthFormat::fixed16,    DepthFormat::reverse_z,
-    DepthFormat::inverse_w, DepthFormat::linear_z, DepthFormat::logarithmic};
+inline constexpr std::array<rl::Named<DepthFormat>, 7> kDepthFormatNames = {
+    {{DepthFormat::float_z, "float-z"},
+     {DepthFormat::fixed24, "fixed24"},
+     {DepthFormat::fixed16, "fixed16"},
+     {DepthFormat::reverse_z, "reverse-z"},
+     {DepthFormat::inverse_w, "inverse-w"},
+     {DepthFormat::linear_z, "linear-w"},
+     {DepthFormat::logarithmic, "log"}}};
+inline constexpr std::array<DepthFormat, 7> kDepthFormats = rl::values_of(kDepthFormatNames);
 
-const char* name(DepthFormat format);
+inline const char* name(DepthFormat value) {
+    return rl::name_in(kDepthFormatNames, value);
+}
 
 struct DepthRange {
     float near_plane, far_plane;

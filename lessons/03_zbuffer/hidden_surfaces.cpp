@@ -8,18 +8,6 @@
 
 namespace zbuffer {
 
-const char* name(HsrMethod method) {
-    switch (method) {
-        case HsrMethod::painter:
-            return "painter";
-        case HsrMethod::bsp:
-            return "bsp";
-        case HsrMethod::zbuffer:
-            return "zbuffer";
-    }
-    return "?";
-}
-
 void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
     for (const SceneTriangle& t : triangles)
         frame.refused += !triangles::rasterize_edge(

@@ -4,6 +4,8 @@
 // them pixel by pixel. Derivations: docs/03_zbuffer.md.
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <algorithm>
 #include <array>
 #include <memory>
@@ -16,9 +18,12 @@
 namespace zbuffer {
 
 enum class HsrMethod { painter, bsp, zbuffer };
-inline constexpr std::array<HsrMethod, 3> kHsrMethods = {HsrMethod::painter, HsrMethod::bsp,
-                                                         HsrMethod::zbuffer};
-const char* name(HsrMethod method);
+inline constexpr std::array<rl::Named<HsrMethod>, 3> kHsrMethodNames = {
+    {{HsrMethod::painter, "painter"}, {HsrMethod::bsp, "bsp"}, {HsrMethod::zbuffer, "zbuffer"}}};
+inline constexpr std::array<HsrMethod, 3> kHsrMethods = rl::values_of(kHsrMethodNames);
+inline const char* name(HsrMethod value) {
+    return rl::name_in(kHsrMethodNames, value);
+}
 
 struct Frame {
     rl::Image colour;

@@ -5,32 +5,6 @@
 
 namespace textures {
 
-const char* name(Filter filter) {
-    switch (filter) {
-        case Filter::nearest:
-            return "nearest";
-        case Filter::bilinear:
-            return "bilinear";
-        case Filter::trilinear:
-            return "trilinear";
-    }
-    return "?";
-}
-
-const char* name(Wrap wrap) {
-    switch (wrap) {
-        case Wrap::repeat:
-            return "repeat";
-        case Wrap::mirror:
-            return "mirror";
-        case Wrap::clamp:
-            return "clamp";
-        case Wrap::border:
-            return "border";
-    }
-    return "?";
-}
-
 rl::vec4 to_vec4(rl::Rgba c) {
     return rl::vec4{float(c.r), float(c.g), float(c.b), float(c.a)} / 255.0f;
 }

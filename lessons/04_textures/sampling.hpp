@@ -5,6 +5,8 @@
 // docs/04_textures.md.
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <array>
 #include <vector>
 
@@ -14,14 +16,24 @@
 namespace textures {
 
 enum class Filter { nearest, bilinear, trilinear };
-inline constexpr std::array<Filter, 3> kFilters = {Filter::nearest, Filter::bilinear,
-                                                   Filter::trilinear};
-const char* name(Filter filter);
+inline constexpr std::array<rl::Named<Filter>, 3> kFilterNames = {
+    {{Filter::nearest, "nearest"},
+     {Filter::bilinear, "bilinear"},
+     {Filter::trilinear, "trilinear"}}};
+inline constexpr std::array<Filter, 3> kFilters = rl::values_of(kFilterNames);
+inline const char* name(Filter value) {
+    return rl::name_in(kFilterNames, value);
+}
 
 enum class Wrap { repeat, mirror, clamp, border };
-inline constexpr std::array<Wrap, 4> kWraps = {Wrap::repeat, Wrap::mirror, Wrap::clamp,
-                                               Wrap::border};
-const char* name(Wrap wrap);
+inline constexpr std::array<rl::Named<Wrap>, 4> kWrapNames = {{{Wrap::repeat, "repeat"},
+                                                               {Wrap::mirror, "mirror"},
+                                                               {Wrap::clamp, "clamp"},
+                                                               {Wrap::border, "border"}}};
+inline constexpr std::array<Wrap, 4> kWraps = rl::values_of(kWrapNames);
+inline const char* name(Wrap value) {
+    return rl::name_in(kWrapNames, value);
+}
 
 // A texture and its mipmap chain: level 0 is the image; each next level
 // halves the size (rounding down, never below 1) and is the exact area

@@ -4,20 +4,6 @@
 
 namespace perspective {
 
-const char* name(ClipMode mode) {
-    switch (mode) {
-        case ClipMode::none:
-            return "none";
-        case ClipMode::near:
-            return "near";
-        case ClipMode::guard_band:
-            return "guard-band";
-        case ClipMode::all:
-            return "all";
-    }
-    return "?";
-}
-
 float guard_band(int width, int height) {
     // |window x| <= (g + 1) / 2 * size <= 2^21  <=>  g <= 2^22 / size - 1.
     const float size = static_cast<float>(std::max(width, height));

@@ -2,16 +2,6 @@
 
 namespace perspective {
 
-const char* name(Interpolation interpolation) {
-    switch (interpolation) {
-        case Interpolation::affine:
-            return "affine";
-        case Interpolation::perspective:
-            return "perspective";
-    }
-    return "?";
-}
-
 PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
     objects_culled += o.objects_culled;
     faces += o.faces;

@@ -25,6 +25,8 @@
 //       });
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <array>
 #include <cstddef>
 
@@ -41,9 +43,12 @@ namespace perspective {
 // the window (what lessons 02-04 did; wrong under perspective) or linearly
 // in the surface, by interpolating varyings / w and 1 / w and dividing.
 enum class Interpolation { affine, perspective };
-inline constexpr std::array<Interpolation, 2> kInterpolations = {Interpolation::affine,
-                                                                 Interpolation::perspective};
-const char* name(Interpolation interpolation);
+inline constexpr std::array<rl::Named<Interpolation>, 2> kInterpolationNames = {
+    {{Interpolation::affine, "affine"}, {Interpolation::perspective, "perspective"}}};
+inline constexpr std::array<Interpolation, 2> kInterpolations = rl::values_of(kInterpolationNames);
+inline const char* name(Interpolation value) {
+    return rl::name_in(kInterpolationNames, value);
+}
 
 struct PipelineOptions {
     ClipMode clip = ClipMode::guard_band;

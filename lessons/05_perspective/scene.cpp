@@ -6,16 +6,6 @@
 
 namespace perspective {
 
-const char* name(LodMethod method) {
-    switch (method) {
-        case LodMethod::pixel:
-            return "pixel";
-        case LodMethod::triangle:
-            return "triangle";
-    }
-    return "?";
-}
-
 Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
                  std::vector<std::string>& warnings) {
     rl::Mesh mesh = rl::load_obj(path, &warnings);

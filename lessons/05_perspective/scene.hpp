@@ -9,6 +9,8 @@
 //   perspective::render(models, camera, {}, frame);
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <string>
 #include <vector>
 
@@ -41,8 +43,12 @@ Box scene_bounds(const std::vector<Model>& models);
 // Where the mip level comes from: each pixel's own UV derivatives (exact
 // under perspective), or one affine estimate per triangle as in lesson 04.
 enum class LodMethod { pixel, triangle };
-inline constexpr std::array<LodMethod, 2> kLodMethods = {LodMethod::pixel, LodMethod::triangle};
-const char* name(LodMethod method);
+inline constexpr std::array<rl::Named<LodMethod>, 2> kLodMethodNames = {
+    {{LodMethod::pixel, "pixel"}, {LodMethod::triangle, "triangle"}}};
+inline constexpr std::array<LodMethod, 2> kLodMethods = rl::values_of(kLodMethodNames);
+inline const char* name(LodMethod value) {
+    return rl::name_in(kLodMethodNames, value);
+}
 
 struct RenderOptions {
     PipelineOptions pipeline;
