@@ -139,7 +139,7 @@ Mesh convert(const Parsed& parsed, const std::string& name,
                 throw MeshError(name, "face with " +
                                           std::to_string(shape.mesh.num_face_vertices[f]) +
                                           " vertices was not triangulated");
-            Triangle t;
+            Face t;
             t.material = shape.mesh.material_ids[f];
             for (int k = 0; k < 3; ++k) {
                 const tinyobj::index_t& idx = indices[3 * f + static_cast<std::size_t>(k)];
@@ -150,10 +150,10 @@ Mesh convert(const Parsed& parsed, const std::string& name,
                     checked_index(idx.texcoord_index, mesh.uvs.size(), "texture coordinate", name);
                 c.normal = checked_index(idx.normal_index, mesh.normals.size(), "normal", name);
             }
-            mesh.triangles.push_back(t);
+            mesh.faces.push_back(t);
         }
     }
-    if (mesh.triangles.empty()) throw MeshError(name, "OBJ holds no faces");
+    if (mesh.faces.empty()) throw MeshError(name, "OBJ holds no faces");
 
     auto resolve = [&](const std::string& file) {
         return file.empty() ? std::filesystem::path{} : material_folder / file;
@@ -167,7 +167,7 @@ Mesh convert(const Parsed& parsed, const std::string& name,
         material.specular = resolve(m.specular_texname);
         mesh.materials.push_back(material);
     }
-    for (const Triangle& t : mesh.triangles)
+    for (const Face& t : mesh.faces)
         if (t.material >= static_cast<int>(mesh.materials.size()))
             throw MeshError(name, "face refers to material " + std::to_string(t.material) +
                                       " that no MTL file defines");

@@ -11,7 +11,7 @@ namespace lines {
 std::size_t draw_wireframe(rl::Image& image, const rl::Mesh& mesh, rl::Rgba colour,
                            LineMethod method) {
     std::set<std::pair<int, int>> drawn;
-    for (const rl::Triangle& t : mesh.triangles)
+    for (const rl::Face& t : mesh.faces)
         for (int k = 0; k < 3; ++k) {
             const int i = t.corners[k].position, j = t.corners[(k + 1) % 3].position;
             if (!drawn.insert(std::minmax(i, j)).second) continue;

@@ -18,7 +18,7 @@ rl::Rgba lit(rl::Rgba colour, float light) {
     return {scale(colour.r), scale(colour.g), scale(colour.b), 255};
 }
 
-rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Triangle& face, const FlatOptions& options) {
+rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Face& face, const FlatOptions& options) {
     const rl::vec3 p0 = mesh.position(face, 0), p1 = mesh.position(face, 1),
                    p2 = mesh.position(face, 2);
     return lit(options.colour, lambert(rl::cross(p1 - p0, p2 - p0), options.light_direction));
@@ -27,8 +27,7 @@ rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Triangle& face, const FlatO
 // [doc:flat-shading]
 DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options) {
     std::vector<rl::Rgba> colours;  // one per face: flat shading
-    for (const rl::Triangle& face : mesh.triangles)
-        colours.push_back(face_colour(mesh, face, options));
+    for (const rl::Face& face : mesh.faces) colours.push_back(face_colour(mesh, face, options));
     perspective::PipelineOptions pipeline;
     pipeline.clip = perspective::ClipMode::none;  // orthographic: w = 1 everywhere
     pipeline.interpolation = perspective::Interpolation::affine;
@@ -36,7 +35,7 @@ DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOp
     pipeline.raster = options.method;
     const perspective::PipelineCounts counts = perspective::draw_mesh<float>(
         mesh, {image}, pipeline,
-        [&](const rl::Triangle& face, int corner) {  // the vertex stage: where the corner goes
+        [&](const rl::Face& face, int corner) {  // the vertex stage: where the corner goes
             return perspective::ClipVertex<float>{
                 perspective::orthographic_clip(mesh.position(face, corner)), 0.0f};
         },
@@ -49,12 +48,12 @@ DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOp
 
 rl::Image three_triangles(RasterMethod method) {
     rl::Image image(200, 200, rl::Rgba{0, 0, 0, 255});
-    const Triangle2 triangles[3] = {{{{10, 70}, {50, 160}, {70, 80}}},
-                                    {{{180, 50}, {150, 1}, {70, 180}}},
-                                    {{{180, 150}, {120, 160}, {130, 180}}}};
+    const ScreenTriangle shapes[3] = {{{{10, 70}, {50, 160}, {70, 80}}},
+                                      {{{180, 50}, {150, 1}, {70, 180}}},
+                                      {{{180, 150}, {120, 160}, {130, 180}}}};
     const rl::Rgba colours[3] = {{255, 0, 0, 255}, {255, 255, 255, 255}, {0, 255, 0, 255}};
     for (int i = 0; i < 3; ++i)
-        rasterize(method, triangles[i], 200, 200,
+        rasterize(method, shapes[i], 200, 200,
                   [&](int x, int y, rl::vec3) { image.at(x, y) = colours[i]; });
     return image;
 }

@@ -30,7 +30,7 @@ rl::Rgba lit(rl::Rgba colour, float light);
 
 // A face's colour: the surface colour lit by Lambert's law with the face's
 // own normal.
-rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Triangle& face, const FlatOptions& options);
+rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Face& face, const FlatOptions& options);
 
 // Draws every face through the pipeline (lesson 05 explains it in full; here
 // the camera is orthographic and there is no depth test: the last face drawn

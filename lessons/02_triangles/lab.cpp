@@ -14,19 +14,19 @@
 namespace {
 
 using triangles::RasterMethod;
-using triangles::Triangle2;
+using triangles::ScreenTriangle;
 
 struct Scene {
     std::string name;
-    std::vector<Triangle2> triangles;
+    std::vector<ScreenTriangle> triangles;
 };
 
-void fill_all(benchmark::State& state, const std::vector<Triangle2>* scene, RasterMethod method,
-              int size) {
+void fill_all(benchmark::State& state, const std::vector<ScreenTriangle>* scene,
+              RasterMethod method, int size) {
     rl::Image image(size, size);
     const rl::Rgba white{255, 255, 255, 255};
     for (auto _ : state) {
-        for (const Triangle2& t : *scene)
+        for (const ScreenTriangle& t : *scene)
             triangles::rasterize(method, t, size, size,
                                  [&](int x, int y, rl::vec3) { image.at(x, y) = white; });
         benchmark::DoNotOptimize(image.pixels().data());
@@ -39,9 +39,9 @@ std::string bench_name(RasterMethod m, const std::string& scene) {
     return std::string("fill/") + triangles::name(m) + "/" + scene;
 }
 
-long pixels_drawn(RasterMethod m, const std::vector<Triangle2>& scene, int size) {
+long pixels_drawn(RasterMethod m, const std::vector<ScreenTriangle>& scene, int size) {
     long n = 0;
-    for (const Triangle2& t : scene)
+    for (const ScreenTriangle& t : scene)
         n += static_cast<long>(triangles::covered_pixels(m, t, size, size).size());
     return n;
 }

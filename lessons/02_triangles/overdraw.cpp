@@ -7,7 +7,7 @@ namespace triangles {
 rl::Image overdraw_fan(RasterMethod method, int size, int slices) {
     rl::Grid<int> count(size, size, 0);
     const float hub = size / 2 + 0.5f;
-    for (const Triangle2& t : disc_fan({hub, hub}, size * 0.42f, slices))
+    for (const ScreenTriangle& t : disc_fan({hub, hub}, size * 0.42f, slices))
         rasterize(method, t, size, size, [&](int x, int y, rl::vec3) { ++count.at(x, y); });
     rl::Image image(size, size);
     for (int y = 0; y < size; ++y)
@@ -28,7 +28,7 @@ rl::Image edge_owners(RasterMethod method, int size) {
     rl::Image image(size, size, none);
     rl::Grid<int> owner(size, size, -1);
     const float hub = size / 2 + 0.5f;
-    const std::vector<Triangle2> fan = disc_fan({hub, hub}, size * 0.42f, 4);
+    const std::vector<ScreenTriangle> fan = disc_fan({hub, hub}, size * 0.42f, 4);
     for (int i = 0; i < 4; ++i)
         rasterize(method, fan[static_cast<std::size_t>(i)], size, size,
                   [&](int x, int y, rl::vec3) {

@@ -41,7 +41,7 @@ inline const char* name(RasterMethod value) {
 // kMaxCoordinate (2^22 pixels) from the origin. Every method keeps its
 // calls to `shade` inside [0, width) x [0, height) for every input.
 template <class Shade>
-bool rasterize(RasterMethod method, const Triangle2& t, int width, int height, Shade&& shade) {
+bool rasterize(RasterMethod method, const ScreenTriangle& t, int width, int height, Shade&& shade) {
     switch (method) {
         case RasterMethod::scanline:
             return rasterize_scanline(t, width, height, shade);

@@ -4,13 +4,13 @@
 // edge shared by two triangles is drawn by both.
 #pragma once
 
-#include "triangle2.hpp"
+#include "screen_triangle.hpp"
 
 namespace triangles {
 
 // [doc:raster-bbox]
 template <class Shade>
-bool rasterize_bbox(const Triangle2& t, int width, int height, Shade&& shade) {
+bool rasterize_bbox(const ScreenTriangle& t, int width, int height, Shade&& shade) {
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;  // degenerate: covers nothing

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <utility>
 
-#include "triangle2.hpp"
+#include "screen_triangle.hpp"
 
 namespace triangles {
 
@@ -36,7 +36,7 @@ inline bool is_top_left(FixedPoint a, FixedPoint b) {
 
 // [doc:raster-edge]
 template <class Shade>
-bool rasterize_edge(const Triangle2& t, int width, int height, Shade&& shade) {
+bool rasterize_edge(const ScreenTriangle& t, int width, int height, Shade&& shade) {
     if (!within_raster_range(t)) return false;  // |x|, |y| <= 2^22: the products fit 62 bits
     FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
     std::int64_t area =

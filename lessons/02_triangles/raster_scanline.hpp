@@ -5,12 +5,12 @@
 
 #include <utility>
 
-#include "triangle2.hpp"
+#include "screen_triangle.hpp"
 
 namespace triangles {
 
 // Barycentric weights at p, from float edge functions (for the shading).
-inline rl::vec3 barycentric(const Triangle2& t, rl::vec2 p, float area) {
+inline rl::vec3 barycentric(const ScreenTriangle& t, rl::vec2 p, float area) {
     return {rl::cross(t.v[2] - t.v[1], p - t.v[1]) / area,
             rl::cross(t.v[0] - t.v[2], p - t.v[2]) / area,
             rl::cross(t.v[1] - t.v[0], p - t.v[0]) / area};
@@ -18,7 +18,7 @@ inline rl::vec3 barycentric(const Triangle2& t, rl::vec2 p, float area) {
 
 // [doc:raster-scanline]
 template <class Shade>
-bool rasterize_scanline(const Triangle2& t, int width, int height, Shade&& shade) {
+bool rasterize_scanline(const ScreenTriangle& t, int width, int height, Shade&& shade) {
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;

@@ -40,7 +40,7 @@ rl::vec2 on_grid(double x, double y) {
 }  // namespace
 
 // [doc:reference-coverage]
-bool reference_covers(const Triangle2& t, int x, int y) {
+bool reference_covers(const ScreenTriangle& t, int x, int y) {
     const Exact v[3] = {exact_snap(t.v[0]), exact_snap(t.v[1]), exact_snap(t.v[2])};
     const int orientation =
         sign((v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x));
@@ -52,18 +52,18 @@ bool reference_covers(const Triangle2& t, int x, int y) {
 }
 // [/doc:reference-coverage]
 
-std::vector<std::pair<int, int>> covered_pixels(RasterMethod method, const Triangle2& t, int width,
-                                                int height) {
+std::vector<std::pair<int, int>> covered_pixels(RasterMethod method, const ScreenTriangle& t,
+                                                int width, int height) {
     std::vector<std::pair<int, int>> pixels;
     rasterize(method, t, width, height, [&](int x, int y, rl::vec3) { pixels.push_back({x, y}); });
     return pixels;
 }
 
-CoverageScore score_coverage(RasterMethod method, const std::vector<Triangle2>& triangles,
+CoverageScore score_coverage(RasterMethod method, const std::vector<ScreenTriangle>& batch,
                              int width, int height) {
     CoverageScore score;
     rl::Grid<std::uint8_t> mine(width, height, 0);
-    for (const Triangle2& t : triangles) {
+    for (const ScreenTriangle& t : batch) {
         ++score.triangles;
         const auto pixels = covered_pixels(method, t, width, height);
         for (const auto& [x, y] : pixels) mine.at(x, y) = 1;
@@ -84,10 +84,10 @@ CoverageScore score_coverage(RasterMethod method, const std::vector<Triangle2>& 
     return score;
 }
 
-WatertightScore score_watertight(RasterMethod method, const std::vector<Triangle2>& mesh, int width,
-                                 int height) {
+WatertightScore score_watertight(RasterMethod method, const std::vector<ScreenTriangle>& mesh,
+                                 int width, int height) {
     rl::Grid<std::uint8_t> count(width, height, 0), inside(width, height, 0);
-    for (const Triangle2& t : mesh) {
+    for (const ScreenTriangle& t : mesh) {
         rasterize(method, t, width, height, [&](int x, int y, rl::vec3) {
             if (count.at(x, y) < 255) ++count.at(x, y);
         });
@@ -108,9 +108,9 @@ WatertightScore score_watertight(RasterMethod method, const std::vector<Triangle
     return score;
 }
 
-std::vector<Triangle2> random_triangles(int count, double area, int size, std::uint64_t seed) {
+std::vector<ScreenTriangle> random_triangles(int count, double area, int size, std::uint64_t seed) {
     rl::SplitMix64 random(seed);
-    std::vector<Triangle2> out;
+    std::vector<ScreenTriangle> out;
     while (static_cast<int>(out.size()) < count) {
         rl::dvec2 p[3];
         for (rl::dvec2& q : p) q = {random.uniform(), random.uniform()};
@@ -135,22 +135,22 @@ std::vector<Triangle2> random_triangles(int count, double area, int size, std::u
         if (extent.x >= size || extent.y >= size) continue;
         const rl::dvec2 shift{random.uniform(0, size - extent.x) - lo.x,
                               random.uniform(0, size - extent.y) - lo.y};
-        Triangle2 t{{on_grid(p[0].x + shift.x, p[0].y + shift.y),
-                     on_grid(p[1].x + shift.x, p[1].y + shift.y),
-                     on_grid(p[2].x + shift.x, p[2].y + shift.y)}};
+        ScreenTriangle t{{on_grid(p[0].x + shift.x, p[0].y + shift.y),
+                          on_grid(p[1].x + shift.x, p[1].y + shift.y),
+                          on_grid(p[2].x + shift.x, p[2].y + shift.y)}};
         if (random.uniform() < 0.5) std::swap(t.v[1], t.v[2]);
         out.push_back(t);
     }
     return out;
 }
 
-std::vector<Triangle2> tie_triangles(int count, int size, std::uint64_t seed) {
+std::vector<ScreenTriangle> tie_triangles(int count, int size, std::uint64_t seed) {
     rl::SplitMix64 random(seed);
-    std::vector<Triangle2> out;
+    std::vector<ScreenTriangle> out;
     while (static_cast<int>(out.size()) < count) {
         const double cx = std::floor(random.uniform(8, size - 8)),
                      cy = std::floor(random.uniform(8, size - 8));
-        Triangle2 t;
+        ScreenTriangle t;
         for (rl::vec2& v : t.v)  // offsets in half pixels: corners and centres
             v = {static_cast<float>(cx + std::floor(random.uniform(-12, 13)) * 0.5),
                  static_cast<float>(cy + std::floor(random.uniform(-12, 13)) * 0.5)};
@@ -159,8 +159,8 @@ std::vector<Triangle2> tie_triangles(int count, int size, std::uint64_t seed) {
     return out;
 }
 
-std::vector<Triangle2> disc_fan(rl::vec2 centre, float radius, int slices) {
-    std::vector<Triangle2> out;
+std::vector<ScreenTriangle> disc_fan(rl::vec2 centre, float radius, int slices) {
+    std::vector<ScreenTriangle> out;
     auto rim = [&](int i) {
         const double angle = 2 * std::numbers::pi * i / slices;
         return on_grid(centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle));
@@ -169,7 +169,7 @@ std::vector<Triangle2> disc_fan(rl::vec2 centre, float radius, int slices) {
     return out;
 }
 
-std::vector<Triangle2> jittered_grid(int cells, int size, float margin, std::uint64_t seed) {
+std::vector<ScreenTriangle> jittered_grid(int cells, int size, float margin, std::uint64_t seed) {
     rl::SplitMix64 random(seed);
     const double step = (size - 2.0 * margin) / cells;
     std::vector<rl::vec2> points;
@@ -182,7 +182,7 @@ std::vector<Triangle2> jittered_grid(int cells, int size, float margin, std::uin
                 on_grid(std::round(margin + i * step) + jx, std::round(margin + j * step) + jy));
         }
     auto at = [&](int i, int j) { return points[static_cast<std::size_t>(j * (cells + 1) + i)]; };
-    std::vector<Triangle2> out;
+    std::vector<ScreenTriangle> out;
     for (int j = 0; j < cells; ++j)
         for (int i = 0; i < cells; ++i) {
             out.push_back({{at(i, j), at(i + 1, j), at(i + 1, j + 1)}});

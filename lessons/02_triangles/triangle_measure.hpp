@@ -16,11 +16,11 @@ namespace triangles {
 // infinitesimal (+e, -e^2) — right, then a hair down — takes it inside, which
 // is the top-left rule stated without edge classes. Exact: vertices are
 // snapped to the 1/256 grid and everything else is 128-bit integer arithmetic.
-bool reference_covers(const Triangle2& t, int x, int y);
+bool reference_covers(const ScreenTriangle& t, int x, int y);
 
 // Every pixel the method covers for t, in row order (clamped to the image).
-std::vector<std::pair<int, int>> covered_pixels(RasterMethod method, const Triangle2& t, int width,
-                                                int height);
+std::vector<std::pair<int, int>> covered_pixels(RasterMethod method, const ScreenTriangle& t,
+                                                int width, int height);
 
 struct CoverageScore {
     long triangles = 0;
@@ -34,7 +34,7 @@ struct CoverageScore {
 };
 
 // Compares each triangle's pixels, one triangle at a time.
-CoverageScore score_coverage(RasterMethod method, const std::vector<Triangle2>& triangles,
+CoverageScore score_coverage(RasterMethod method, const std::vector<ScreenTriangle>& batch,
                              int width, int height);
 
 struct WatertightScore {
@@ -45,22 +45,22 @@ struct WatertightScore {
 
 // Draws all triangles of a mesh whose triangles share edges and counts how
 // often the method covers each pixel: it should be once inside, never twice.
-WatertightScore score_watertight(RasterMethod method, const std::vector<Triangle2>& mesh, int width,
-                                 int height);
+WatertightScore score_watertight(RasterMethod method, const std::vector<ScreenTriangle>& mesh,
+                                 int width, int height);
 
 // `count` triangles of about `area` square pixels inside a size x size image,
 // vertices on the 1/256-pixel grid, windings mixed, no angle under 15 degrees.
-std::vector<Triangle2> random_triangles(int count, double area, int size, std::uint64_t seed);
+std::vector<ScreenTriangle> random_triangles(int count, double area, int size, std::uint64_t seed);
 
 // Small triangles whose vertices lie on pixel centres and corners, so that
 // many centres fall exactly on edges: the tie rule's test.
-std::vector<Triangle2> tie_triangles(int count, int size, std::uint64_t seed);
+std::vector<ScreenTriangle> tie_triangles(int count, int size, std::uint64_t seed);
 
 // A disc cut into `slices` triangles meeting at a centre that lies on a pixel centre.
-std::vector<Triangle2> disc_fan(rl::vec2 centre, float radius, int slices);
+std::vector<ScreenTriangle> disc_fan(rl::vec2 centre, float radius, int slices);
 
 // A grid of `cells` x `cells` quads, each split in two, over [margin, size -
 // margin]^2, inner vertices moved by multiples of half a pixel.
-std::vector<Triangle2> jittered_grid(int cells, int size, float margin, std::uint64_t seed);
+std::vector<ScreenTriangle> jittered_grid(int cells, int size, float margin, std::uint64_t seed);
 
 }  // namespace triangles

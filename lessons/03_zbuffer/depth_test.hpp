@@ -8,7 +8,7 @@
 
 #include <algorithm>
 
-#include "02_triangles/triangle2.hpp"
+#include "02_triangles/screen_triangle.hpp"
 #include "rasterlab/image.hpp"
 
 namespace zbuffer {

@@ -8,8 +8,8 @@
 
 namespace zbuffer {
 
-void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
-    for (const SceneTriangle& t : triangles)
+void draw_in_order(const std::vector<SceneTriangle>& scene, Frame& frame) {
+    for (const SceneTriangle& t : scene)
         frame.refused += !triangles::rasterize_edge(
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 frame.colour.at(x, y) = t.colour;
@@ -19,23 +19,23 @@ void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame) {
 }
 
 // [doc:painter]
-void sort_far_to_near(std::vector<SceneTriangle>& triangles) {
+void sort_far_to_near(std::vector<SceneTriangle>& scene) {
     auto mean_depth = [](const SceneTriangle& t) { return t.v[0].z + t.v[1].z + t.v[2].z; };
-    std::stable_sort(triangles.begin(), triangles.end(),
+    std::stable_sort(scene.begin(), scene.end(),
                      [&](const SceneTriangle& a, const SceneTriangle& b) {
                          return mean_depth(a) > mean_depth(b);
                      });
 }
 
-void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame) {
-    sort_far_to_near(triangles);
-    draw_in_order(triangles, frame);
+void draw_painter(std::vector<SceneTriangle> scene, Frame& frame) {
+    sort_far_to_near(scene);
+    draw_in_order(scene, frame);
 }
 // [/doc:painter]
 
 // [doc:zbuffer]
-void draw_zbuffer(const std::vector<SceneTriangle>& triangles, Frame& frame) {
-    for (const SceneTriangle& t : triangles)
+void draw_zbuffer(const std::vector<SceneTriangle>& scene, Frame& frame) {
+    for (const SceneTriangle& t : scene)
         frame.refused += !triangles::rasterize_edge(
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 // Window depth is affine in screen space: interpolate it linearly.
@@ -87,22 +87,21 @@ void add_fan(const std::vector<rl::vec3>& polygon, const SceneTriangle& source,
     }
 }
 
-std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> triangles, BspTree& tree,
-                                    int depth) {
-    if (triangles.empty()) return nullptr;
+std::unique_ptr<BspNode> build_node(std::vector<SceneTriangle> scene, BspTree& tree, int depth) {
+    if (scene.empty()) return nullptr;
     if (depth > kMaxBspDepth)
         throw BspTooLarge("BSP tree deeper than " + std::to_string(kMaxBspDepth) +
                           " levels; refusing (draw this scene with --hsr zbuffer)");
     tree.depth = std::max(tree.depth, depth);
     ++tree.nodes;
     auto node = std::make_unique<BspNode>();
-    const SceneTriangle& splitter = triangles.front();
+    const SceneTriangle& splitter = scene.front();
     const rl::dvec3 a = as_double(splitter.v[0]);
     node->normal =
         rl::normalize(rl::cross(as_double(splitter.v[1]) - a, as_double(splitter.v[2]) - a));
     node->offset = -rl::dot(node->normal, a);
     std::vector<SceneTriangle> front, back;
-    for (const SceneTriangle& t : triangles) {
+    for (const SceneTriangle& t : scene) {
         std::array<double, 3> side;
         bool any_front = false, any_back = false;
         for (int k = 0; k < 3; ++k) {
@@ -149,14 +148,14 @@ void draw_node(const BspNode* node, Frame& frame) {
 
 }  // namespace
 
-BspTree build_bsp(std::vector<SceneTriangle> triangles) {
+BspTree build_bsp(std::vector<SceneTriangle> scene) {
     rl::SplitMix64 random(7);
-    for (std::size_t i = triangles.size(); i > 1; --i)  // Fisher-Yates, reproducible
-        std::swap(triangles[i - 1], triangles[static_cast<std::size_t>(random.next() % i)]);
+    for (std::size_t i = scene.size(); i > 1; --i)  // Fisher-Yates, reproducible
+        std::swap(scene[i - 1], scene[static_cast<std::size_t>(random.next() % i)]);
     BspTree tree;
-    tree.pieces = triangles.size();
-    tree.max_pieces = max_bsp_pieces(triangles.size());
-    tree.root = build_node(std::move(triangles), tree, 1);
+    tree.pieces = scene.size();
+    tree.max_pieces = max_bsp_pieces(scene.size());
+    tree.root = build_node(std::move(scene), tree, 1);
     return tree;
 }
 

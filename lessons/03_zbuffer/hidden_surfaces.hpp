@@ -37,18 +37,18 @@ struct Frame {
 };
 
 // Draws every triangle in the given order with no depth test: the last one wins.
-void draw_in_order(const std::vector<SceneTriangle>& triangles, Frame& frame);
+void draw_in_order(const std::vector<SceneTriangle>& scene, Frame& frame);
 
 // The painter's order: by each triangle's mean depth, farthest first (a
 // stable sort: equal means keep their given order).
-void sort_far_to_near(std::vector<SceneTriangle>& triangles);
+void sort_far_to_near(std::vector<SceneTriangle>& scene);
 
 // The painter's algorithm: sort_far_to_near, then draw in order.
-void draw_painter(std::vector<SceneTriangle> triangles, Frame& frame);
+void draw_painter(std::vector<SceneTriangle> scene, Frame& frame);
 
 // The z-buffer: keep, per pixel, the depth of the nearest surface drawn so
 // far and draw a fragment only if it is nearer (depth test `less`).
-void draw_zbuffer(const std::vector<SceneTriangle>& triangles, Frame& frame);
+void draw_zbuffer(const std::vector<SceneTriangle>& scene, Frame& frame);
 
 // A binary space partitioning tree: each node holds a plane (from one of its
 // triangles), the triangles lying in it, and the subtrees in front of and
@@ -65,7 +65,7 @@ struct BspTree {
     std::size_t triangles = 0;  // after splitting
     std::size_t nodes = 0;
     int depth = 0;
-    std::size_t pieces = 0, max_pieces = 0;  // triangles made so far, and the cap
+    std::size_t pieces = 0, max_pieces = 0;  // scene made so far, and the cap
 };
 
 // Splitting can multiply the triangles without limit: 3000 random triangles
@@ -85,7 +85,7 @@ class BspTooLarge : public std::runtime_error {
 
 // Builds the tree; the splitting plane of each node is the first remaining
 // triangle's, after a fixed shuffle (keeps the tree shallow on meshes).
-BspTree build_bsp(std::vector<SceneTriangle> triangles);
+BspTree build_bsp(std::vector<SceneTriangle> scene);
 
 // Draws back to front for a viewer looking along +depth: at each node, the
 // side away from the viewer first, then the node, then the near side.

@@ -20,7 +20,7 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
     for (const Placement& placement : placements) {
         const rl::Mesh mesh = rl::load_obj(placement.model, warnings);
         int index = 0;
-        for (const rl::Triangle& face : mesh.triangles) {
+        for (const rl::Face& face : mesh.faces) {
             rl::vec3 world[3];
             std::array<perspective::ClipVertex<float>, 3> corners;
             for (int k = 0; k < 3; ++k) {

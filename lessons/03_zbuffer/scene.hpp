@@ -39,7 +39,7 @@ std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements,
 // The lesson's default: the rock with a tilted torus passing through it.
 std::vector<Placement> default_placements();
 
-inline triangles::Triangle2 screen(const SceneTriangle& t) {
+inline triangles::ScreenTriangle screen(const SceneTriangle& t) {
     return {{t.v[0].xy(), t.v[1].xy(), t.v[2].xy()}};
 }
 

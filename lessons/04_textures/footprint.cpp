@@ -66,10 +66,10 @@ MeshFootprint mesh_footprint_average(const rl::Mesh& mesh, const rl::Image& text
     rl::FloatImage depth(fine, fine, 1.0f);
     rl::Grid<int> face_at(fine, fine, -1);
     rl::Grid<rl::vec2> uv_at(fine, fine, rl::vec2{});
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-        const TexturedFace face = textured_face(mesh, mesh.triangles[f], options, size, size);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const TexturedFace face = textured_face(mesh, mesh.faces[f], options, size, size);
         if (!face.front) continue;
-        triangles::Triangle2 sub_pixels = face.screen();
+        triangles::ScreenTriangle sub_pixels = face.screen();
         for (rl::vec2& p : sub_pixels.v) p = p * static_cast<float>(n);
         triangles::rasterize_edge(sub_pixels, fine, fine, [&](int x, int y, rl::vec3 b) {
             const float z =

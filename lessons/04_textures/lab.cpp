@@ -14,7 +14,7 @@
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/mesh.hpp"
 #include "rasterlab/results_table.hpp"
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include "rasterlab/cli.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 #include "textured.hpp"
 
 int main(int argc, char** argv) {

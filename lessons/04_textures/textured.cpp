@@ -22,12 +22,12 @@ UvDerivatives affine_derivatives(const perspective::TriangleSetup<rl::vec2>& t) 
 
 namespace {
 
-rl::vec3 placed(const rl::Mesh& mesh, const rl::Triangle& face, int corner,
+rl::vec3 placed(const rl::Mesh& mesh, const rl::Face& face, int corner,
                 const TexturedOptions& options) {
     return options.rotation * mesh.position(face, corner) * options.scale;
 }
 
-rl::vec2 texture_coordinates(const rl::Mesh& mesh, const rl::Triangle& face, int corner,
+rl::vec2 texture_coordinates(const rl::Mesh& mesh, const rl::Face& face, int corner,
                              const TexturedOptions& options) {
     const int t = face.corners[static_cast<std::size_t>(corner)].uv;
     return (t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{}) * options.uv_scale +
@@ -36,7 +36,7 @@ rl::vec2 texture_coordinates(const rl::Mesh& mesh, const rl::Triangle& face, int
 
 }  // namespace
 
-TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
+TexturedFace textured_face(const rl::Mesh& mesh, const rl::Face& face,
                            const TexturedOptions& options, int width, int height) {
     TexturedFace out;
     for (int k = 0; k < 3; ++k) {
@@ -53,9 +53,9 @@ TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
 
 triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
                                     const MipChain& texture, const TexturedOptions& options) {
-    std::vector<float> shade(mesh.triangles.size(), 1.0f);  // lesson 02's Lambert, per face
+    std::vector<float> shade(mesh.faces.size(), 1.0f);  // lesson 02's Lambert, per face
     for (std::size_t i = 0; options.lighting && i < shade.size(); ++i) {
-        const rl::Triangle& face = mesh.triangles[i];
+        const rl::Face& face = mesh.faces[i];
         const rl::vec3 p0 = placed(mesh, face, 0, options), p1 = placed(mesh, face, 1, options),
                        p2 = placed(mesh, face, 2, options);
         shade[i] = triangles::lambert(rl::cross(p1 - p0, p2 - p0), triangles::kDefaultLight);
@@ -64,7 +64,7 @@ triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
     pipeline.clip = perspective::ClipMode::none;  // orthographic: w = 1, nothing to cut
     pipeline.interpolation = perspective::Interpolation::affine;  // exact when w = 1
     // [doc:textured-pixel]
-    const auto vertex_stage = [&](const rl::Triangle& face, int corner) {
+    const auto vertex_stage = [&](const rl::Face& face, int corner) {
         return perspective::ClipVertex<rl::vec2>{
             perspective::orthographic_clip(placed(mesh, face, corner, options)),
             texture_coordinates(mesh, face, corner, options)};

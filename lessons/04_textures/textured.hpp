@@ -35,11 +35,11 @@ struct TexturedFace {
     rl::vec3 world[3], window[3];
     rl::vec2 uv[3];
     bool front;
-    triangles::Triangle2 screen() const {
+    triangles::ScreenTriangle screen() const {
         return {{window[0].xy(), window[1].xy(), window[2].xy()}};
     }
 };
-TexturedFace textured_face(const rl::Mesh& mesh, const rl::Triangle& face,
+TexturedFace textured_face(const rl::Mesh& mesh, const rl::Face& face,
                            const TexturedOptions& options, int width, int height);
 
 // Draws the mesh into the frame through the pipeline (orthographic, lesson

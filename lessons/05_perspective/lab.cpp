@@ -14,7 +14,7 @@
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 #include "ray_truth.hpp"
 #include "scene.hpp"
 
@@ -200,8 +200,7 @@ rl::Mesh two_triangle_floor(const rl::Mesh& floor) {
     quad.uvs = {{0, 0}, {4, 0}, {4, 4}, {0, 4}};
     quad.normals.clear();
     const auto corner = [](int i) { return rl::Corner{i, i, -1}; };
-    quad.triangles = {{{corner(0), corner(1), corner(2)}, 0},
-                      {{corner(0), corner(2), corner(3)}, 0}};
+    quad.faces = {{{corner(0), corner(1), corner(2)}, 0}, {{corner(0), corner(2), corner(3)}, 0}};
     return quad;
 }
 

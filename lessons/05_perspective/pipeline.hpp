@@ -16,7 +16,7 @@
 //   const rl::mat4 mvp = perspective::view_projection(camera, aspect) * model;
 //   perspective::draw_mesh<rl::vec2>(
 //       mesh, {frame.colour, &frame.depth}, options,
-//       [&](const rl::Triangle& face, int corner) {   // vertex stage
+//       [&](const rl::Face& face, int corner) {   // vertex stage
 //           return perspective::ClipVertex<rl::vec2>{
 //               mvp * rl::extend(mesh.position(face, corner), 1.0f), uv_of(face, corner)};
 //       },
@@ -171,7 +171,7 @@ TriangleSetup<V> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const Cl
 template <Varyings V, class PixelStage>
 bool rasterize_setup(const TriangleSetup<V>& t, RenderTarget target, triangles::RasterMethod method,
                      PixelStage& pixel_stage, std::size_t& fragments) {
-    const triangles::Triangle2 screen{{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}};
+    const triangles::ScreenTriangle screen{{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}};
     const int width = target.colour.width(), height = target.colour.height();
     return triangles::rasterize(method, screen, width, height, [&](int x, int y, rl::vec3 b) {
         const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
@@ -244,7 +244,7 @@ PipelineCounts draw_mesh(const rl::Mesh& mesh, RenderTarget target, const Pipeli
     const ClipPlanes planes =
         clip_planes(options.clip, target.colour.width(), target.colour.height());
     int index = 0;
-    for (const rl::Triangle& face : mesh.triangles) {
+    for (const rl::Face& face : mesh.faces) {
         const std::array<ClipVertex<V>, 3> v = {vertex_stage(face, 0), vertex_stage(face, 1),
                                                 vertex_stage(face, 2)};
         draw_triangle(v, planes, options, target, pixel_stage, index++, counts);

@@ -2,7 +2,7 @@
 
 #include "02_triangles/flat_shading.hpp"
 #include "04_textures/textured.hpp"
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 
 namespace perspective {
 
@@ -42,21 +42,21 @@ Box scene_bounds(const std::vector<Model>& models) {
 
 namespace {
 
-rl::vec2 uv_of(const rl::Mesh& mesh, const rl::Triangle& face, int corner) {
+rl::vec2 uv_of(const rl::Mesh& mesh, const rl::Face& face, int corner) {
     const int t = face.corners[static_cast<std::size_t>(corner)].uv;
     return t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{};
 }
 
 // Lesson 02's flat Lambert term of every face, in world space.
 std::vector<float> face_light(const Model& model, const RenderOptions& options) {
-    std::vector<float> light(model.mesh.triangles.size(), 1.0f);
+    std::vector<float> light(model.mesh.faces.size(), 1.0f);
     if (!options.lighting) return light;
     for (std::size_t i = 0; i < light.size(); ++i) {
         rl::vec3 world[3];
         for (int k = 0; k < 3; ++k)
-            world[k] = (model.transform *
-                        rl::extend(model.mesh.position(model.mesh.triangles[i], k), 1.0f))
-                           .xyz();
+            world[k] =
+                (model.transform * rl::extend(model.mesh.position(model.mesh.faces[i], k), 1.0f))
+                    .xyz();
         light[i] =
             triangles::lambert(rl::cross(world[1] - world[0], world[2] - world[0]), options.light);
     }
@@ -79,7 +79,7 @@ PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
             continue;
         }
         const std::vector<float> light = face_light(model, options);
-        const auto vertex_stage = [&](const rl::Triangle& face, int corner) {
+        const auto vertex_stage = [&](const rl::Face& face, int corner) {
             return ClipVertex<rl::vec2>{mvp * rl::extend(model.mesh.position(face, corner), 1.0f),
                                         uv_of(model.mesh, face, corner)};
         };

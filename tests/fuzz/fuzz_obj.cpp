@@ -23,7 +23,7 @@ void check(const rl::Mesh& mesh) {
         if (!finite(n)) std::abort();
     for (const rl::vec2& t : mesh.uvs)
         if (!std::isfinite(t.x) || !std::isfinite(t.y)) std::abort();
-    for (const rl::Triangle& t : mesh.triangles) {
+    for (const rl::Face& t : mesh.faces) {
         for (const rl::Corner& c : t.corners) {
             if (c.position < 0 || c.position >= static_cast<int>(mesh.positions.size()))
                 std::abort();

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "rasterlab/mesh.hpp"
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 
 namespace {
 
@@ -25,10 +25,10 @@ TEST_P(ObjAsset, LoadsCleanlyFitsTheUnitCubeAndHasItsTextures) {
     const rl::Mesh mesh = rl::load_obj(
         std::filesystem::path(RASTERLAB_OBJ_DIR) / (std::string(asset.name) + ".obj"), &warnings);
     EXPECT_TRUE(warnings.empty()) << warnings.front();
-    EXPECT_GT(mesh.triangles.size(), 0u);
+    EXPECT_GT(mesh.faces.size(), 0u);
     for (const rl::vec3& p : mesh.positions)
         for (int i = 0; i < 3; ++i) ASSERT_LE(std::abs(p[static_cast<std::size_t>(i)]), 1.0f);
-    for (const rl::Triangle& t : mesh.triangles)
+    for (const rl::Face& t : mesh.faces)
         for (const rl::Corner& c : t.corners) {
             ASSERT_GE(c.uv, 0);
             ASSERT_GE(c.normal, 0);

@@ -8,7 +8,7 @@
 
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/mesh.hpp"
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 #include "temp_dir.hpp"
 
 namespace {
@@ -30,18 +30,18 @@ f 1/1/1 2/2/1 3/3/1 4/4/1
 
 TEST(Mesh, QuadBecomesTwoTriangles) {
     const Mesh mesh = rl::parse_obj(kSquare, "", "square.obj");
-    ASSERT_EQ(mesh.triangles.size(), 2u);
+    ASSERT_EQ(mesh.faces.size(), 2u);
     EXPECT_EQ(mesh.positions.size(), 4u);
     EXPECT_EQ(mesh.uvs.size(), 4u);
     EXPECT_EQ(mesh.normals.size(), 1u);
-    for (const rl::Triangle& t : mesh.triangles)
+    for (const rl::Face& t : mesh.faces)
         for (const rl::Corner& c : t.corners) {
             EXPECT_EQ(c.position, c.uv);  // the file pairs v i with vt i
             EXPECT_EQ(c.normal, 0);
         }
     // The two triangles cover the square: their areas add up to 1.
     float area = 0;
-    for (const rl::Triangle& t : mesh.triangles)
+    for (const rl::Face& t : mesh.faces)
         area += 0.5f * rl::length(rl::cross(mesh.position(t, 1) - mesh.position(t, 0),
                                             mesh.position(t, 2) - mesh.position(t, 0)));
     EXPECT_FLOAT_EQ(area, 1.0f);
@@ -57,7 +57,7 @@ v 0.309 -0.951 0
 f 1 2 3 4 5
 )",
                                     "", "pentagon.obj");
-    EXPECT_EQ(mesh.triangles.size(), 3u);
+    EXPECT_EQ(mesh.faces.size(), 3u);
 }
 
 TEST(Mesh, NegativeIndicesCountBackFromTheLatestVertex) {
@@ -70,19 +70,19 @@ v 5 5 5
 f 1 2 -1
 )",
                                     "", "relative.obj");
-    ASSERT_EQ(mesh.triangles.size(), 2u);
-    EXPECT_EQ(mesh.triangles[0].corners[2].position, 2);
-    EXPECT_EQ(mesh.triangles[1].corners[2].position, 3);
+    ASSERT_EQ(mesh.faces.size(), 2u);
+    EXPECT_EQ(mesh.faces[0].corners[2].position, 2);
+    EXPECT_EQ(mesh.faces[1].corners[2].position, 3);
 }
 
 TEST(Mesh, MissingUvsAndNormalsAreMinusOne) {
     const Mesh mesh =
         rl::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n", "", "no-uv.obj");
-    ASSERT_EQ(mesh.triangles.size(), 1u);
-    EXPECT_EQ(mesh.triangles[0].corners[0].uv, -1);
-    EXPECT_EQ(mesh.triangles[0].corners[0].normal, 0);
+    ASSERT_EQ(mesh.faces.size(), 1u);
+    EXPECT_EQ(mesh.faces[0].corners[0].uv, -1);
+    EXPECT_EQ(mesh.faces[0].corners[0].normal, 0);
     const Mesh bare = rl::parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "", "bare.obj");
-    EXPECT_EQ(bare.triangles[0].corners[1].normal, -1);
+    EXPECT_EQ(bare.faces[0].corners[1].normal, -1);
 }
 
 struct BadObj {
@@ -160,7 +160,7 @@ TEST(Mesh, UnknownLinesAndCommentsDoNotStopLoading) {
     const Mesh mesh = rl::parse_obj(
         "v 0 0 0 # origin\nv 1 0 0\r\nv +0 1 0\nfrobnicate 1 2 3\n\n# f 9 9 9\nf 1 2 3\n", "",
         "unknown.obj", &warnings);
-    EXPECT_EQ(mesh.triangles.size(), 1u);
+    EXPECT_EQ(mesh.faces.size(), 1u);
 }
 
 TEST(Mesh, FacesBeyondTheVertexCapAreRefusedQuickly) {
@@ -175,7 +175,7 @@ TEST(Mesh, FacesBeyondTheVertexCapAreRefusedQuickly) {
         for (std::size_t i = 1; i <= n; ++i) text += " " + std::to_string(i);
         return text + "\n";
     };
-    EXPECT_EQ(rl::parse_obj(polygon(rl::kMaxFaceVertices), "", "cap.obj").triangles.size(),
+    EXPECT_EQ(rl::parse_obj(polygon(rl::kMaxFaceVertices), "", "cap.obj").faces.size(),
               rl::kMaxFaceVertices - 2);
     try {
         rl::parse_obj(polygon(100000), "", "huge_face.obj");
@@ -198,7 +198,7 @@ TEST(Mesh, FilesOverTheSizeCapAreRefusedNamingTheOverride) {
             << e.what();
     }
     ::setenv("RASTERLAB_MAX_OBJ_MB", "3", 1);
-    EXPECT_EQ(rl::load_obj(path).triangles.size(), 1u);
+    EXPECT_EQ(rl::load_obj(path).faces.size(), 1u);
     ::unsetenv("RASTERLAB_MAX_OBJ_MB");
     EXPECT_EQ(rl::max_obj_bytes(), rl::kDefaultMaxObjBytes);
 }
@@ -209,7 +209,7 @@ TEST(Mesh, DevicesAsMaterialFilesAreWarnedAbout) {
     rl_test::write_text(dir.path() / "m.obj",
                         "mtllib zero.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     std::vector<std::string> warnings;
-    EXPECT_EQ(rl::load_obj(dir.path() / "m.obj", &warnings).triangles.size(), 1u);
+    EXPECT_EQ(rl::load_obj(dir.path() / "m.obj", &warnings).faces.size(), 1u);
     ASSERT_FALSE(warnings.empty());
     EXPECT_NE(warnings[0].find("not a regular file"), std::string::npos) << warnings[0];
 }
@@ -229,7 +229,7 @@ TEST(Mesh, MaterialTexturesResolveAgainstTheObjFolder) {
                         "mtllib box.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl wood\nf 1 2 3\n");
     const Mesh mesh = rl::load_obj(dir.path() / "box.obj");
     ASSERT_EQ(mesh.materials.size(), 1u);
-    EXPECT_EQ(mesh.triangles[0].material, 0);
+    EXPECT_EQ(mesh.faces[0].material, 0);
     EXPECT_EQ(mesh.materials[0].diffuse, dir.path() / "wood.png");
     EXPECT_EQ(mesh.materials[0].specular, dir.path() / "wood_s.png");
     EXPECT_EQ(mesh.materials[0].normal_tangent, dir.path() / "wood_n.png");

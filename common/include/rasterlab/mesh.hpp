@@ -25,7 +25,8 @@ struct Corner {
     int normal = -1;
 };
 
-struct Triangle {
+// A face of the mesh, always a triangle: three corners of indices.
+struct Face {
     std::array<Corner, 3> corners;
     int material = -1;  // index into Mesh::materials, -1 for none
 };
@@ -44,12 +45,10 @@ struct Mesh {
     std::vector<vec3> positions;
     std::vector<vec2> uvs;
     std::vector<vec3> normals;
-    std::vector<Triangle> triangles;  // polygons are triangulated on loading
+    std::vector<Face> faces;  // polygons are triangulated on loading
     std::vector<Material> materials;
 
-    vec3 position(const Triangle& t, int corner) const {
-        return positions[t.corners[corner].position];
-    }
+    vec3 position(const Face& t, int corner) const { return positions[t.corners[corner].position]; }
 };
 
 // The largest OBJ file load_obj() reads: 256 MiB, unless the environment

@@ -19,9 +19,6 @@ class ResultsTable {
     // Throws std::invalid_argument unless the row has one value per column.
     void add_row(std::initializer_list<Value> values);
 
-    const std::vector<std::string>& columns() const { return columns_; }
-    std::size_t row_count() const { return rows_.size(); }
-
     // RFC 4180 CSV: fields with commas, quotes or newlines are quoted.
     std::string to_csv() const;
     void write_csv(const std::filesystem::path& path) const;  // atomically

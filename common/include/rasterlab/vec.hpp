@@ -44,7 +44,6 @@ using vec4 = Vec<4, float>;
 using dvec2 = Vec<2, double>;
 using dvec3 = Vec<3, double>;
 using dvec4 = Vec<4, double>;
-using ivec2 = Vec<2, int>;
 
 // Appends a w component: a point (w = 1) or a direction (w = 0).
 template <typename T>
@@ -163,6 +162,7 @@ Vec<N, T> normalize(const Vec<N, T>& v) {
     return scaled / length(scaled);
 }
 
+// "(x, y, z)": what GoogleTest prints when a test comparing vectors fails.
 template <std::size_t N, typename T>
 std::ostream& operator<<(std::ostream& out, const Vec<N, T>& v) {
     out << '(';

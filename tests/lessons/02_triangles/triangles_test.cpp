@@ -11,14 +11,14 @@
 namespace {
 
 using triangles::RasterMethod;
-using triangles::Triangle2;
+using triangles::ScreenTriangle;
 
-std::set<std::pair<int, int>> pixels(RasterMethod m, const Triangle2& t, int size = 64) {
+std::set<std::pair<int, int>> pixels(RasterMethod m, const ScreenTriangle& t, int size = 64) {
     const auto list = triangles::covered_pixels(m, t, size, size);
     return {list.begin(), list.end()};
 }
 
-std::set<std::pair<int, int>> reference(const Triangle2& t, int size = 64) {
+std::set<std::pair<int, int>> reference(const ScreenTriangle& t, int size = 64) {
     std::set<std::pair<int, int>> out;
     for (int y = 0; y < size; ++y)
         for (int x = 0; x < size; ++x)
@@ -37,8 +37,8 @@ TEST_P(EveryMethod, ZeroAreaTrianglesCoverNothing) {
 TEST_P(EveryMethod, NanAndInfinityAreRefusedWithoutDrawing) {
     const float nan = std::numeric_limits<float>::quiet_NaN(),
                 inf = std::numeric_limits<float>::infinity();
-    for (const Triangle2& t :
-         {Triangle2{{{nan, 1}, {5, 5}, {9, 1}}}, Triangle2{{{1, 1}, {inf, 5}, {9, 1}}}}) {
+    for (const ScreenTriangle& t :
+         {ScreenTriangle{{{nan, 1}, {5, 5}, {9, 1}}}, ScreenTriangle{{{1, 1}, {inf, 5}, {9, 1}}}}) {
         int calls = 0;
         EXPECT_FALSE(
             triangles::rasterize(GetParam(), t, 16, 16, [&](int, int, rl::vec3) { ++calls; }));
@@ -48,9 +48,9 @@ TEST_P(EveryMethod, NanAndInfinityAreRefusedWithoutDrawing) {
 
 TEST_P(EveryMethod, TrianglesPartlyOrFarOffScreenStayInsideTheImage) {
     // Any pixel outside would trip the debug bounds check or the sanitizers.
-    for (const Triangle2& t : {Triangle2{{{-100, -100}, {40, 10}, {10, 300}}},
-                               Triangle2{{{-5e5f, -5e5f}, {5e5f, -5e5f}, {0, 5e5f}}},
-                               Triangle2{{{1e6f, 1e6f}, {2e6f, 1e6f}, {1e6f, 2e6f}}}}) {
+    for (const ScreenTriangle& t : {ScreenTriangle{{{-100, -100}, {40, 10}, {10, 300}}},
+                                    ScreenTriangle{{{-5e5f, -5e5f}, {5e5f, -5e5f}, {0, 5e5f}}},
+                                    ScreenTriangle{{{1e6f, 1e6f}, {2e6f, 1e6f}, {1e6f, 2e6f}}}}) {
         triangles::rasterize(GetParam(), t, 32, 32, [&](int x, int y, rl::vec3) {
             ASSERT_TRUE(x >= 0 && y >= 0 && x < 32 && y < 32) << x << "," << y;
         });
@@ -58,7 +58,7 @@ TEST_P(EveryMethod, TrianglesPartlyOrFarOffScreenStayInsideTheImage) {
 }
 
 TEST_P(EveryMethod, BarycentricWeightsInterpolateThePixelCentre) {
-    const Triangle2 t{{{2.25f, 3.5f}, {40.75f, 9.0f}, {12.0f, 50.5f}}};
+    const ScreenTriangle t{{{2.25f, 3.5f}, {40.75f, 9.0f}, {12.0f, 50.5f}}};
     triangles::rasterize(GetParam(), t, 64, 64, [&](int x, int y, rl::vec3 b) {
         const rl::vec2 p = t.v[0] * b.x + t.v[1] * b.y + t.v[2] * b.z;
         EXPECT_NEAR(p.x, x + 0.5f, 1e-3f);
@@ -72,9 +72,10 @@ TEST_P(EveryMethod, BarycentricWeightsInterpolateThePixelCentre) {
 // nothing for a full-screen triangle from 1e20 up. Now every method refuses
 // what lies beyond kMaxCoordinate and draws the rest inside the image.
 TEST_P(EveryMethod, FarOutVerticesAreRefusedWithoutACall) {
-    for (const Triangle2& t : {Triangle2{{{3e38f, 10.5f}, {-3e38f, 300.5f}, {1.5e38f, 100.5f}}},
-                               Triangle2{{{-1e20f, -1e20f}, {1e20f, -1e20f}, {0, 1e20f}}},
-                               Triangle2{{{-4194305.0f, 0}, {40, 0}, {0, 40}}}}) {
+    for (const ScreenTriangle& t :
+         {ScreenTriangle{{{3e38f, 10.5f}, {-3e38f, 300.5f}, {1.5e38f, 100.5f}}},
+          ScreenTriangle{{{-1e20f, -1e20f}, {1e20f, -1e20f}, {0, 1e20f}}},
+          ScreenTriangle{{{-4194305.0f, 0}, {40, 0}, {0, 40}}}}) {
         int calls = 0;
         EXPECT_FALSE(
             triangles::rasterize(GetParam(), t, 64, 64, [&](int, int, rl::vec3) { ++calls; }));
@@ -95,7 +96,7 @@ TEST_P(EveryMethod, TrianglesReachingTheRangeLimitStayInsideAndDrawEachPixelOnce
     const double limit = triangles::kMaxCoordinate;
     long wrong = 0, covered = 0;
     for (int i = 0; i < 600; ++i) {
-        Triangle2 t;
+        ScreenTriangle t;
         for (rl::vec2& v : t.v) v = {float(uniform(-limit, limit)), float(uniform(-limit, limit))};
         if (i % 2) t.v[0] = {float(uniform(0, 64)), float(uniform(0, 64))};  // one inside
         std::set<std::pair<int, int>> seen;
@@ -120,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P(All, EveryMethod, testing::ValuesIn(triangles::kRasterM
 
 // docs/02_triangles.md works this example by hand; the code must agree.
 TEST(Barycentric, TheWorkedExampleOfThePage) {
-    const Triangle2 t{{{1, 1}, {9, 2}, {3, 7}}};
+    const ScreenTriangle t{{{1, 1}, {9, 2}, {3, 7}}};
     const float area = triangles::signed_area2(t);
     EXPECT_EQ(area, 46.0f);
     const rl::vec3 b = triangles::barycentric(t, {4, 3}, area);
@@ -139,15 +140,15 @@ TEST(EdgeRasterizer, MatchesTheExactRuleOnRandomTrianglesAndTies) {
 }
 
 TEST(EdgeRasterizer, NeedlesAndSliversMatchTheExactRule) {
-    const Triangle2 needle{{{0.5f, 0.5f}, {63.5f, 1.0f}, {63.5f, 0.75f}}};
-    const Triangle2 sliver{{{3.0f, 60.0f}, {60.0f, 3.0f}, {60.1f, 3.2f}}};
-    const Triangle2 on_centres{{{4.5f, 4.5f}, {30.5f, 4.5f}, {4.5f, 30.5f}}};
-    for (const Triangle2& t : {needle, sliver, on_centres})
+    const ScreenTriangle needle{{{0.5f, 0.5f}, {63.5f, 1.0f}, {63.5f, 0.75f}}};
+    const ScreenTriangle sliver{{{3.0f, 60.0f}, {60.0f, 3.0f}, {60.1f, 3.2f}}};
+    const ScreenTriangle on_centres{{{4.5f, 4.5f}, {30.5f, 4.5f}, {4.5f, 30.5f}}};
+    for (const ScreenTriangle& t : {needle, sliver, on_centres})
         EXPECT_EQ(pixels(RasterMethod::edge, t), reference(t));
 }
 
 TEST(EdgeRasterizer, BothWindingsCoverTheSamePixels) {
-    for (const Triangle2& t : triangles::random_triangles(100, 200, 64, 13))
+    for (const ScreenTriangle& t : triangles::random_triangles(100, 200, 64, 13))
         EXPECT_EQ(pixels(RasterMethod::edge, t),
                   pixels(RasterMethod::edge, {{t.v[0], t.v[2], t.v[1]}}));
 }
@@ -164,9 +165,9 @@ TEST(EdgeRasterizer, FansAndGridsCoverEveryPixelExactlyOnce) {
 
 TEST(EdgeRasterizer, HugeCoordinatesWithinRangeStayExactAndBeyondAreRefused) {
     // A triangle reaching 3 million pixels out, still inside the fixed-point range.
-    const Triangle2 huge{{{-3e6f, -1e6f}, {3e6f, -2e6f}, {10.25f, 3e6f}}};
+    const ScreenTriangle huge{{{-3e6f, -1e6f}, {3e6f, -2e6f}, {10.25f, 3e6f}}};
     EXPECT_EQ(pixels(RasterMethod::edge, huge), reference(huge));
-    const Triangle2 beyond{{{-5e6f, 0}, {5e6f, 0}, {0, 5e6f}}};  // past 2^22 pixels
+    const ScreenTriangle beyond{{{-5e6f, 0}, {5e6f, 0}, {0, 5e6f}}};  // past 2^22 pixels
     EXPECT_FALSE(
         triangles::rasterize(RasterMethod::edge, beyond, 64, 64, [](int, int, rl::vec3) {}));
 }
@@ -185,7 +186,7 @@ TEST(FloatRasterizers, ScanlineIsWatertightButBreaksTiesTheOtherWay) {
     const auto mesh = triangles::score_watertight(RasterMethod::scanline, fan, 64, 64);
     EXPECT_EQ(mesh.double_covered, 0);
     EXPECT_EQ(mesh.holes, 0);
-    const Triangle2 flat_top{
+    const ScreenTriangle flat_top{
         {{4.5f, 4.5f}, {30.5f, 20.5f}, {4.5f, 20.5f}}};  // top edge through centres
     EXPECT_NE(pixels(RasterMethod::scanline, flat_top), reference(flat_top));
 }

@@ -9,13 +9,13 @@
 
 namespace triangles {
 
-struct Triangle2 {
+struct ScreenTriangle {
     rl::vec2 v[3];
 };
 
 // Twice the signed area: positive when the vertices run counter-clockwise
 // (window y points up), which is what a front face looks like.
-inline float signed_area2(const Triangle2& t) {
+inline float signed_area2(const ScreenTriangle& t) {
     return rl::cross(t.v[1] - t.v[0], t.v[2] - t.v[0]);
 }
 
@@ -30,7 +30,7 @@ inline float signed_area2(const Triangle2& t) {
 // guard band far inside it. NaN and infinity are refused the same way.
 inline constexpr float kMaxCoordinate = 4194304.0f;
 
-inline bool within_raster_range(const Triangle2& t) {
+inline bool within_raster_range(const ScreenTriangle& t) {
     for (const rl::vec2& p : t.v)
         if (!(std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate)) return false;
     return true;  // (the negated test is false for NaN, so NaN is refused too)

@@ -1,4 +1,5 @@
-// Finding and loading the textures that go with a mesh.
+// Finding and loading the texture files that go with a mesh (the sampling of
+// textures is lesson 04's, in lessons/04_textures/sampling.hpp).
 #pragma once
 
 #include <filesystem>

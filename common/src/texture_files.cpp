@@ -1,4 +1,4 @@
-#include "rasterlab/textures.hpp"
+#include "rasterlab/texture_files.hpp"
 
 #include "rasterlab/image_io.hpp"
 
