@@ -1,5 +1,8 @@
 // The picture lesson 00 draws: every pixel set by hand, designed so that a
 // wrong origin, swapped colour bytes or a broken RLE run are visible at once.
+//
+//   const rl::Image card = lesson00::make_test_card(640, 480);
+//   const rl::Image wrong = lesson00::misread(card, lesson00::Misreading::origin);
 #pragma once
 
 #include "rasterlab/named_enum.hpp"

@@ -1,4 +1,7 @@
 // Drawing a line into an image: clip it to the image, then run one method.
+//
+//   lines::draw_line(image, {10.5f, 20.5f}, {300.5f, 90.5f}, {255, 255, 255, 255},
+//                    lines::LineMethod::bresenham);
 #pragma once
 
 #include "line_clip.hpp"

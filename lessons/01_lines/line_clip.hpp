@@ -1,5 +1,8 @@
 // Clipping a segment to a rectangle (Liang-Barsky), so that endpoints far
 // outside the image cost nothing and cannot overflow a pixel counter.
+//
+//   const lines::ClippedSegment c =
+//       lines::clip_segment(a, b, lines::pixel_centres(image.width(), image.height()));
 #pragma once
 
 #include <optional>

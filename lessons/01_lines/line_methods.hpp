@@ -4,6 +4,8 @@
 // [i, i+1) x [j, j+1) and has its centre at (i + 0.5, j + 0.5).
 // These functions do not clip: call them through draw_line() (draw_line.hpp),
 // which clips to the image first. The derivations are in docs/01_lines.md.
+//
+//   lines::line_bresenham(a, b, [&](int x, int y, float) { image.at(x, y) = colour; });
 #pragma once
 
 #include "rasterlab/named_enum.hpp"

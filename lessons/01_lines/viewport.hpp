@@ -1,5 +1,7 @@
 // The simplest camera there is: orthographic, looking down -z, with model
 // x and y in [-1, 1] stretched over the image. Lesson 05 replaces it.
+//
+//   const rl::vec3 w = lines::orthographic_to_window(mesh.positions[i], 800, 800);
 #pragma once
 
 #include "rasterlab/transform.hpp"

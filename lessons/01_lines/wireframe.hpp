@@ -1,3 +1,7 @@
+// A mesh drawn as lines: every edge once, with any of lesson 01's methods.
+//
+//   lines::draw_wireframe(image, rl::load_obj("obj/rock.obj"), {255, 255, 255, 255},
+//                         lines::LineMethod::wu);
 #pragma once
 
 #include "draw_line.hpp"

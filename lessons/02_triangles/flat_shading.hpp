@@ -1,5 +1,8 @@
 // Drawing a mesh with one colour per face: Lambert's law with the face's own
 // normal, orthographic projection, back faces culled.
+//
+//   rl::Image image(800, 800, rl::kBackground);
+//   const triangles::DrawCounts counts = triangles::draw_flat_shaded(image, mesh, {});
 #pragma once
 
 #include "raster.hpp"

@@ -1,5 +1,7 @@
 // A picture of how often each pixel is drawn when triangles share edges:
 // the fan of lesson 02's "where it breaks" section.
+//
+//   const rl::Image fan = triangles::overdraw_fan(triangles::RasterMethod::bbox, 48, 12);
 #pragma once
 
 #include "raster.hpp"

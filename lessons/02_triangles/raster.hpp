@@ -3,6 +3,9 @@
 // holds the weights of the three vertices at the pixel's centre. Later
 // lessons pass their own `shade` (depth test, texturing, ...) instead of
 // copying a rasterizer. Derivations: docs/02_triangles.md.
+//
+//   triangles::rasterize(triangles::RasterMethod::edge, {{a, b, c}}, width, height,
+//                        [&](int x, int y, rl::vec3 weights) { image.at(x, y) = colour; });
 #pragma once
 
 #include "rasterlab/named_enum.hpp"

@@ -1,5 +1,8 @@
 // A triangle in window coordinates (pixel (i, j) has its centre at
 // (i + 0.5, j + 0.5)), with the helpers every rasterizer shares.
+//
+//   const triangles::ScreenTriangle t{{{10, 10}, {90, 20}, {40, 80}}};
+//   if (triangles::signed_area2(t) > 0) { /* counter-clockwise: a front face */ }
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,9 @@
 // Scoring rasterizers against the exact coverage rule: the lab's and the
 // stability tests' yardstick, computed independently of the methods.
+//
+//   const auto batch = triangles::random_triangles(1000, 100.0, 1024, 1);
+//   const triangles::CoverageScore s =
+//       triangles::score_coverage(triangles::RasterMethod::bbox, batch, 1024);
 #pragma once
 
 #include <cstdint>

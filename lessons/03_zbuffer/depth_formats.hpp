@@ -2,6 +2,8 @@
 // lab's perspective study uses these; the program's orthographic z-buffer
 // stores window depth as a float (the first format). Derivations and the
 // measured precision: docs/03_zbuffer.md.
+//
+//   const double key = zbuffer::depth_key(zbuffer::DepthFormat::fixed16, w, {0.1f, 1000});
 #pragma once
 
 #include "rasterlab/named_enum.hpp"

@@ -1,3 +1,6 @@
+// Lesson 03's depth buffer shown as an image.
+//
+//   rl::save_image("depth.png", zbuffer::depth_picture(frame.depth));
 #pragma once
 
 #include "rasterlab/image.hpp"

@@ -2,6 +2,11 @@
 // BSP tree, and the z-buffer. Each draws a scene into a colour image and an
 // ID buffer (which face won each pixel, -1 for none), so the lab can compare
 // them pixel by pixel. Derivations: docs/03_zbuffer.md.
+//
+//   const std::vector<zbuffer::SceneTriangle> scene =
+//       zbuffer::build_scene(zbuffer::default_placements(), 800, 800);
+//   zbuffer::Frame frame(800, 800);
+//   zbuffer::render(zbuffer::HsrMethod::bsp, scene, frame);
 #pragma once
 
 #include "rasterlab/named_enum.hpp"

@@ -1,4 +1,6 @@
 // Scenes that tell the hidden-surface methods apart, for the lab and tests.
+//
+//   const double wrong = zbuffer::wrong_share(painter_frame, zbuffer_frame);
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,8 @@
 // The scene of lesson 03: triangles already in window coordinates (x, y in
 // pixels, z = window depth in [0, 1], 0 nearest), each with the colour flat
 // shading gives it and the index that identifies it in an ID buffer.
+//
+//   const auto scene = zbuffer::build_scene({{rl::project_model("rock")}}, 800, 800);
 #pragma once
 
 #include <string>

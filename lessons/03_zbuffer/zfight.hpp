@@ -3,6 +3,9 @@
 // perspective camera (60 degree field of view). At each pixel both planes'
 // view distances are computed exactly; the farther plane "wins" the depth
 // test wrongly when its stored depth is not larger than the near plane's.
+//
+//   const double share = zbuffer::zfight_share(zbuffer::DepthFormat::float_z,
+//                                              {0.1f, 1000}, scene);
 #pragma once
 
 #include "depth_formats.hpp"

@@ -1,5 +1,7 @@
 // The lab's ground truth for texture filtering: the texture averaged over
 // each pixel's exact footprint, for scenes whose texture mapping is affine.
+//
+//   const rl::Image truth = textures::footprint_average(texture, scene, 64);
 #pragma once
 
 #include <cstdint>

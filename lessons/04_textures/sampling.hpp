@@ -3,6 +3,9 @@
 // top-right; texel (i, j) covers [i, i+1) x [j, j+1) in texel units and has
 // its centre at (i + 0.5, j + 0.5), like a pixel. Derivations:
 // docs/04_textures.md.
+//
+//   const textures::MipChain chain(image);
+//   const rl::vec4 c = textures::sample(chain, uv, {du_dx, du_dy}, {textures::Filter::trilinear});
 #pragma once
 
 #include "rasterlab/named_enum.hpp"

@@ -1,6 +1,9 @@
 // Drawing a textured mesh: orthographic, z-buffered (lesson 03), with the
 // texture coordinates interpolated across each triangle and sampled by a
 // chosen filter and wrap mode.
+//
+//   zbuffer::Frame frame(800, 800);
+//   textures::draw_textured(frame, mesh, textures::MipChain(diffuse.image), {});
 #pragma once
 
 #include "03_zbuffer/hidden_surfaces.hpp"
