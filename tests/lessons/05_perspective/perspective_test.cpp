@@ -183,6 +183,17 @@ TEST(PerspectiveTest, BackFaceTestHoldsWhenAVertexIsBehindTheEye) {
     EXPECT_LT(facing(a, c, b), 0);
 }
 
+// The same face through the whole pipeline: culled by its window-space area,
+// it would vanish; culled by det[x y w], it is drawn where the rays say.
+TEST(PerspectiveTest, FaceWithAVertexBehindTheEyeIsDrawnNotCulled) {
+    const Camera camera = looking_down_minus_z();
+    const std::vector<WorldTriangle> scene = {{{{-1, -0.5, -2}, {1, -0.5, -2}, {0, 0.5, 1}}, {}}};
+    PipelineCounts counts;
+    EXPECT_LT(wrong_share(scene, camera, ClipMode::guard_band, &counts), 0.002);
+    EXPECT_EQ(counts.back_faces, 0u);
+    EXPECT_GT(counts.fragments, 1000u);
+}
+
 TEST(PerspectiveTest, BoxesOutsideTheFrustumAreCulledAndOthersKept) {
     const Camera camera = looking_down_minus_z();
     const rl::mat4 vp = view_projection(camera, 1.0f);
