@@ -17,7 +17,8 @@ rl::Rgba to_rgba(rl::vec4 c) {
 }
 
 // [doc:downsample]
-rl::Image downsample(const rl::Image& image) {
+template <class Value, class Byte>
+rl::Image average_down(const rl::Image& image, Value&& value, Byte&& byte) {
     const int w = std::max(1, image.width() / 2), h = std::max(1, image.height() / 2);
     const double sx = double(image.width()) / w,
                  sy = double(image.height()) / h;  // 2, or a bit more if odd
@@ -36,21 +37,32 @@ rl::Image downsample(const rl::Image& image) {
                         std::min<double>(j + 1, (y + 1) * sy) - std::max<double>(j, y * sy);
                     const double weight = wx * wy;
                     const rl::Rgba c = image.get(i, j);
-                    sum[0] += weight * c.r, sum[1] += weight * c.g, sum[2] += weight * c.b,
-                        sum[3] += weight * c.a;
+                    sum[0] += weight * value(c.r), sum[1] += weight * value(c.g),
+                        sum[2] += weight * value(c.b), sum[3] += weight * c.a;
                     total += weight;
                 }
-            auto byte = [&](double s) { return static_cast<std::uint8_t>(std::lround(s / total)); };
-            out.set(x, y, {byte(sum[0]), byte(sum[1]), byte(sum[2]), byte(sum[3])});
+            const auto alpha = static_cast<std::uint8_t>(std::lround(sum[3] / total));
+            out.set(x, y,
+                    {byte(sum[0] / total), byte(sum[1] / total), byte(sum[2] / total), alpha});
         }
     return out;
 }
+
+rl::Image downsample(const rl::Image& image, const TexelEncoding* encoding) {
+    if (encoding)  // average the values the bytes stand for, then encode again
+        return average_down(
+            image, [&](std::uint8_t c) { return double(encoding->value[c]); },
+            [&](double v) { return encoding->to_byte(static_cast<float>(v)); });
+    return average_down(
+        image, [](std::uint8_t c) { return double(c); },
+        [](double v) { return static_cast<std::uint8_t>(std::lround(v)); });
+}
 // [/doc:downsample]
 
-MipChain::MipChain(const rl::Image& image) {
+MipChain::MipChain(const rl::Image& image, const TexelEncoding* encoding) {
     levels_.push_back(image);
     while (levels_.back().width() > 1 || levels_.back().height() > 1)
-        levels_.push_back(downsample(levels_.back()));
+        levels_.push_back(downsample(levels_.back(), encoding));
 }
 
 // [doc:wrap]
@@ -77,7 +89,10 @@ rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) 
     const int x = wrap_texel(i, level.width(), state.wrap),
               y = wrap_texel(j, level.height(), state.wrap);
     if (x < 0 || y < 0) return state.border;
-    return to_vec4(level.get(x, y));
+    const rl::Rgba c = level.get(x, y);
+    if (!state.encoding) return to_vec4(c);
+    const std::array<float, 256>& value = state.encoding->value;
+    return {value[c.r], value[c.g], value[c.b], float(c.a) / 255.0f};
 }
 
 // Texel coordinates are computed in double after reducing u to one period:

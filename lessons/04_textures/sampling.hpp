@@ -11,6 +11,7 @@
 #include "rasterlab/named_enum.hpp"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "rasterlab/image.hpp"
@@ -41,9 +42,20 @@ inline const char* name(Wrap value) {
 // A texture and its mipmap chain: level 0 is the image; each next level
 // halves the size (rounding down, never below 1) and is the exact area
 // average of the level before, so odd sizes lose nothing.
+// How texel bytes stand for values: filtering and mipmapping average values,
+// not bytes. Lesson 04 takes bytes as they are (value = byte / 255); lesson
+// 06 passes sRGB's transfer function, so that colour textures are decoded to
+// linear light before any averaging, as GPUs do for sRGB textures.
+struct TexelEncoding {
+    std::array<float, 256> value;          // byte -> value in [0, 1]
+    std::uint8_t (*to_byte)(float value);  // value in [0, 1] -> nearest byte
+};
+
 class MipChain {
   public:
-    explicit MipChain(const rl::Image& image);
+    // Each level averages the one before in the values of `encoding`
+    // (nullptr: the bytes themselves).
+    explicit MipChain(const rl::Image& image, const TexelEncoding* encoding = nullptr);
     int levels() const { return static_cast<int>(levels_.size()); }
     const rl::Image& level(int i) const { return levels_[static_cast<std::size_t>(i)]; }
 
@@ -53,12 +65,13 @@ class MipChain {
 
 // One level down: each output texel averages the input texels under it,
 // weighted by how much of each it covers.
-rl::Image downsample(const rl::Image& image);
+rl::Image downsample(const rl::Image& image, const TexelEncoding* encoding = nullptr);
 
 struct SamplerState {
     Filter filter = Filter::bilinear;
     Wrap wrap = Wrap::repeat;
     rl::vec4 border{0, 0, 0, 1};
+    const TexelEncoding* encoding = nullptr;  // colour texels through it (alpha never)
 };
 
 // How the texture coordinates change from one pixel to the next, in UV units:

@@ -29,6 +29,8 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <type_traits>
 
 #include "02_triangles/raster.hpp"
 #include "03_zbuffer/depth_test.hpp"
@@ -162,20 +164,34 @@ TriangleSetup<V> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const Cl
 }
 // [/doc:triangle-setup]
 
+template <class T>
+inline constexpr bool kIsOptional = false;
+template <class T>
+inline constexpr bool kIsOptional<std::optional<T>> = true;
+
 // [doc:draw-setup]
-// Rasterizes one set-up triangle: lesson 02's rasterizer, lesson 03's early
-// depth test (window depth is linear on screen, so it is interpolated with
-// the plain weights), then the varyings, then the per-pixel stage. Under
+// Rasterizes one set-up triangle: lesson 02's rasterizer, lesson 03's depth
+// test (window depth is linear on screen, so it is interpolated with the
+// plain weights), then the varyings, then the per-pixel stage. Under
 // perspective the varyings are b . (varyings / w) divided by b . (1 / w);
-// affine interpolation is b . varyings. Returns false if refused.
+// affine interpolation is b . varyings. The depth test runs before the
+// per-pixel stage (early) unless that stage may discard the pixel (it
+// returns std::optional): then the stage runs on pixels that would pass, and
+// only a pixel it keeps writes its depth (late). Returns false if refused.
 template <Varyings V, class PixelStage>
 bool rasterize_setup(const TriangleSetup<V>& t, RenderTarget target, triangles::RasterMethod method,
                      PixelStage& pixel_stage, std::size_t& fragments) {
+    using Result = std::invoke_result_t<PixelStage&, const Fragment<V>&>;
+    constexpr bool late_depth = kIsOptional<Result>;
     const triangles::ScreenTriangle screen{{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}};
     const int width = target.colour.width(), height = target.colour.height();
     return triangles::rasterize(method, screen, width, height, [&](int x, int y, rl::vec3 b) {
         const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
-        if (target.depth && !zbuffer::passes_depth_test(*target.depth, x, y, z)) return;
+        if constexpr (late_depth) {
+            if (target.depth && !(z < target.depth->at(x, y))) return;
+        } else {
+            if (target.depth && !zbuffer::passes_depth_test(*target.depth, x, y, z)) return;
+        }
         const V over_w = t.over_w[0] * b.x + t.over_w[1] * b.y + t.over_w[2] * b.z;
         float inverse_w = 1;
         V varyings = over_w;
@@ -183,7 +199,15 @@ bool rasterize_setup(const TriangleSetup<V>& t, RenderTarget target, triangles::
             inverse_w = b.x * t.inverse_w[0] + b.y * t.inverse_w[1] + b.z * t.inverse_w[2];
             varyings = over_w * (1 / inverse_w);
         }
-        target.colour.at(x, y) = pixel_stage(Fragment<V>{x, y, z, varyings, inverse_w, &t});
+        const Fragment<V> fragment{x, y, z, varyings, inverse_w, &t};
+        if constexpr (late_depth) {
+            const Result kept = pixel_stage(fragment);
+            if (!kept) return;  // discarded: neither colour nor depth
+            if (target.depth) target.depth->at(x, y) = z;
+            target.colour.at(x, y) = *kept;
+        } else {
+            target.colour.at(x, y) = pixel_stage(fragment);
+        }
         ++fragments;
     });
 }
