@@ -7,13 +7,13 @@
 namespace perspective {
 
 Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
-                 std::vector<std::string>& warnings) {
+                 std::vector<std::string>& warnings, const textures::TexelEncoding* encoding) {
     rl::Mesh mesh = rl::load_obj(path, &warnings);
     rl::Texture diffuse = rl::load_texture(mesh, 0, rl::TextureRole::diffuse, warnings);
     std::string texture_name =
         diffuse.is_default ? "a plain default" : diffuse.source.filename().string();
     const Box box = bounds(mesh, rl::mat4::identity());
-    return {std::move(mesh), transform, box, textures::MipChain(diffuse.image),
+    return {std::move(mesh), transform, box, textures::MipChain(diffuse.image, encoding),
             std::move(texture_name)};
 }
 

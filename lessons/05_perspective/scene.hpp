@@ -30,9 +30,11 @@ struct Model {
 };
 
 // Loads an OBJ and its diffuse texture (a plain one, with a warning, when it
-// has none), placed by `transform`.
+// has none), placed by `transform`; the mip chain averages in `encoding`'s
+// values (lesson 06 passes sRGB's; nullptr: the bytes).
 Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
-                 std::vector<std::string>& warnings);
+                 std::vector<std::string>& warnings,
+                 const textures::TexelEncoding* encoding = nullptr);
 
 // The program's default: the floor (scaled 2.2x), the crate standing on it and
 // the globe beside it, all from obj/.

@@ -1,0 +1,49 @@
+// Linear light and sRGB. Image bytes are sRGB-encoded: the byte 128 is not
+// half of 255's light but about a fifth of it. Light adds and scales in
+// linear units, so this lesson decodes textures to linear light, lights in
+// linear light, and encodes the result to sRGB bytes; `naive` skips both
+// conversions, as lessons 00-05 did. Derivation: docs/06_shading.md#linear-light.
+//
+//   const float light = shading::srgb_to_linear(128 / 255.0f);  // 0.216
+//   const rl::Rgba out = shading::encode({0.5f, 0.5f, 0.5f}, shading::Output::srgb);  // 188
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "04_textures/sampling.hpp"
+#include "rasterlab/image.hpp"
+#include "rasterlab/named_enum.hpp"
+
+namespace shading {
+
+// The sRGB transfer functions (IEC 61966-2-1), for a value in [0, 1].
+template <class T>
+T srgb_to_linear(T c) {
+    return c <= T(0.04045) ? c / T(12.92) : std::pow((c + T(0.055)) / T(1.055), T(2.4));
+}
+
+template <class T>
+T linear_to_srgb(T c) {
+    c = std::clamp(c, T(0), T(1));
+    return c <= T(0.0031308) ? c * T(12.92) : T(1.055) * std::pow(c, T(1) / T(2.4)) - T(0.055);
+}
+
+// Texels as sRGB: each byte's linear value, and the nearest byte of a value.
+const textures::TexelEncoding& srgb_texels();
+
+// How the light computed for a pixel becomes bytes: encoded to sRGB (light
+// was computed in linear units), or written as it is (naive: the light was
+// computed on the bytes' own values).
+enum class Output { srgb, naive };
+inline constexpr std::array<rl::Named<Output>, 2> kOutputNames = {
+    {{Output::srgb, "srgb"}, {Output::naive, "naive"}}};
+inline constexpr std::array<Output, 2> kOutputs = rl::values_of(kOutputNames);
+inline const char* name(Output value) {
+    return rl::name_in(kOutputNames, value);
+}
+
+rl::Rgba encode(rl::vec3 colour, Output output);
+
+}  // namespace shading

@@ -1,0 +1,93 @@
+// The lighting of this lesson, in linear light: ambient + diffuse (Lambert)
+// + specular, summed over directional lights. Two specular models: Phong's
+// (the mirror direction r against the view direction) and Blinn's (the
+// half-vector h against the normal). Written once for float (the shaders)
+// and double (the lab's analytic sphere). Derivations: docs/06_shading.md#lighting.
+//
+//   const shading::Lighting<float> lighting = shading::default_lighting(light_direction);
+//   const rl::vec3 c = shading::reflected(lighting, normal, to_eye, albedo,
+//                                         shading::Specular::blinn_phong);
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "rasterlab/vec.hpp"
+
+namespace shading {
+
+template <class T>
+using Colour = rl::Vec<3, T>;
+
+// A directional light: the unit direction towards it, and its colour (linear).
+template <class T>
+struct Light {
+    rl::Vec<3, T> direction;
+    Colour<T> colour;
+};
+
+template <class T>
+struct Lighting {
+    std::vector<Light<T>> lights;
+    Colour<T> ambient{T(0.03), T(0.03), T(0.035)};  // light from everywhere, times the albedo
+    Colour<T> specular{T(0.35), T(0.35), T(0.35)};  // the specular colour (not tinted by albedo)
+    T shininess = 32;                               // the specular exponent
+};
+
+enum class Specular { phong, blinn_phong };
+
+// [doc:reflected]
+// The light a surface point sends towards the eye, per unit of light
+// arriving, in two parts: what the albedo multiplies (ambient and diffuse),
+// and the specular highlight (the light's own colour). n and to_eye are
+// unit vectors.
+template <class T>
+struct Reflection {
+    Colour<T> diffuse, specular;
+};
+
+template <class T>
+Reflection<T> reflection(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3, T> to_eye,
+                         Specular specular) {
+    Reflection<T> out{lighting.ambient, {}};
+    for (const Light<T>& light : lighting.lights) {
+        const T n_dot_l = rl::dot(n, light.direction);
+        if (!(n_dot_l > 0)) continue;  // the light is behind the surface (or n is NaN)
+        T s = 0;                       // how well the reflection lines up with the eye
+        if (specular == Specular::phong) {
+            const rl::Vec<3, T> r = n * (2 * n_dot_l) - light.direction;  // l mirrored about n
+            s = rl::dot(r, to_eye);
+        } else {
+            s = rl::dot(n, rl::normalize(light.direction + to_eye));  // n . h
+        }
+        // pow(0, 0) is 1: an exponent of 0 makes the highlight cover the lit side.
+        const T highlight = std::pow(std::max(s, T(0)), lighting.shininess);
+        out.diffuse += light.colour * n_dot_l;
+        out.specular += light.colour * lighting.specular * highlight;
+    }
+    return out;
+}
+
+template <class T>
+Colour<T> reflected(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3, T> to_eye,
+                    Colour<T> albedo, Specular specular) {
+    const Reflection<T> r = reflection(lighting, n, to_eye, specular);
+    return albedo * r.diffuse + r.specular;
+}
+// [/doc:reflected]
+
+// The lesson's two lights: a key light from `direction` and a dim fill light
+// from the opposite side, below, so that no face is left pure black.
+template <class T>
+Lighting<T> default_lighting(rl::Vec<3, T> direction) {
+    Lighting<T> lighting;
+    lighting.lights.push_back({rl::normalize(direction), {T(1), T(0.97), T(0.92)}});
+    lighting.lights.push_back(
+        {rl::normalize(rl::Vec<3, T>{-direction.x, -T(0.3) * std::abs(direction.y) - T(0.2),
+                                     -direction.z * T(0.5)}),
+         {T(0.12), T(0.14), T(0.18)}});
+    return lighting;
+}
+
+}  // namespace shading

@@ -1,0 +1,73 @@
+// Lesson 06: shading. Normals, the normal matrix, flat, Gouraud, Phong and
+// Blinn-Phong shading as shaders, in linear light. Read docs/06_shading.md
+// beside it.
+#include <cstdio>
+
+#include "05_perspective/view_options.hpp"
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "scene.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Lesson 06, shading: models lit by flat, Gouraud, Phong or Blinn-Phong shading, in "
+        "linear light, through lesson 05's camera."};
+    rl::ImageOptions image_options{"06_shading.tga"};
+    perspective::ViewOptions view;
+    shading::ShadingOptions options;
+    shading::Weighting weighting = shading::Weighting::angle;
+    bool naive = false, one_light = false;
+    float shininess = options.lighting.shininess;
+    perspective::add_view_options(app, view, "floor, globe and torus from obj/");
+    rl::add_image_options(app, image_options);
+    rl::add_method_option(app, "--shading", options.model, shading::kModels, "Shading model");
+    rl::add_method_option(app, "--weighting", weighting, shading::kWeightings,
+                          "Vertex normals, where the OBJ has none, averaged by");
+    app.add_option("--shininess", shininess, "Specular exponent (0: highlight everywhere lit)")
+        ->check(rl::finite_number(0, 1e6))
+        ->capture_default_str();
+    app.add_flag("--naive", naive,
+                 "Light the sRGB bytes as if they were linear and write the result as it is "
+                 "(what lessons 00-05 did)");
+    app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
+    CLI11_PARSE(app, argc, argv);
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
+
+    return rl::guarded_main("06_shading", [&] {
+        rl::check_image_output(output);
+        options.output = naive ? shading::Output::naive : shading::Output::srgb;
+        options.lighting = shading::default_lighting(perspective::light_direction(view));
+        if (one_light) options.lighting.lights.resize(1);
+        options.lighting.shininess = shininess;
+        std::vector<std::string> warnings;
+        std::vector<shading::LitModel> models;
+        if (view.models.empty())
+            models = shading::default_scene(options.output, weighting, warnings);
+        for (const std::string& path : view.models)  // as stored: the identity model matrix
+            models.push_back(shading::load_lit_model(path, rl::mat4::identity(), options.output,
+                                                     weighting, warnings));
+        rl::print_warnings("06_shading", warnings);
+        std::size_t computed = 0;
+        for (const shading::LitModel& m : models) computed += m.computed_normals;
+
+        const perspective::Box box = [&] {
+            perspective::Box b;
+            for (const shading::LitModel& m : models)
+                b.add(perspective::bounds(m.model.mesh, m.model.transform));
+            return b;
+        }();
+        const float aspect = static_cast<float>(width) / static_cast<float>(height);
+        const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+        zbuffer::Frame frame(width, height);
+        const perspective::PipelineCounts counts = shading::render(models, camera, options, frame);
+        rl::save_image(output, frame.colour);
+        std::printf(
+            "%zu models: %zu faces, %zu back faces, %zu clipped, %zu fragments shaded; %s "
+            "shading, %s output, %zu corner normals computed (%s-weighted); into %s\n",
+            models.size(), counts.faces, counts.back_faces, counts.clipped, counts.fragments,
+            shading::name(options.model), shading::name(options.output), computed,
+            shading::name(weighting), output.c_str());
+        return 0;
+    });
+}

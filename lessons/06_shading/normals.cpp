@@ -1,0 +1,82 @@
+#include "normals.hpp"
+
+#include <cmath>
+
+namespace shading {
+
+rl::vec3 area_normal(const rl::Mesh& mesh, const rl::Face& face) {
+    const rl::vec3 p0 = mesh.position(face, 0), p1 = mesh.position(face, 1),
+                   p2 = mesh.position(face, 2);
+    return rl::cross(p1 - p0, p2 - p0);
+}
+
+namespace {
+
+// The angle of the face at corner k, in radians (0 for a degenerate corner).
+float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k) {
+    const rl::vec3 p = mesh.position(face, k);
+    const rl::vec3 a = mesh.position(face, (k + 1) % 3) - p,
+                   b = mesh.position(face, (k + 2) % 3) - p;
+    const float la = rl::length(a), lb = rl::length(b);
+    if (!(la > 0 && lb > 0)) return 0;
+    return std::acos(std::clamp(rl::dot(a, b) / (la * lb), -1.0f, 1.0f));
+}
+
+}  // namespace
+
+// [doc:vertex-normals]
+std::vector<rl::vec3> vertex_normals(const rl::Mesh& mesh, Weighting weighting) {
+    std::vector<rl::vec3> sum(mesh.positions.size());
+    for (const rl::Face& face : mesh.faces) {
+        const rl::vec3 n = area_normal(mesh, face);  // length: twice the area
+        const rl::vec3 unit = rl::normalize(n);
+        for (int k = 0; k < 3; ++k) {
+            const rl::vec3 add =
+                weighting == Weighting::area ? n : unit * corner_angle(mesh, face, k);
+            sum[static_cast<std::size_t>(face.corners[static_cast<std::size_t>(k)].position)] +=
+                add;
+        }
+    }
+    for (rl::vec3& n : sum) n = rl::normalize(n);  // zero stays zero
+    return sum;
+}
+// [/doc:vertex-normals]
+
+std::vector<rl::vec3> corner_normals(const rl::Mesh& mesh, Weighting weighting,
+                                     std::size_t* computed) {
+    std::vector<rl::vec3> averaged;  // computed only if some corner needs it
+    std::vector<rl::vec3> out;
+    out.reserve(mesh.faces.size() * 3);
+    std::size_t not_from_obj = 0;
+    for (const rl::Face& face : mesh.faces)
+        for (int k = 0; k < 3; ++k) {
+            const rl::Corner& c = face.corners[static_cast<std::size_t>(k)];
+            rl::vec3 n{};
+            if (c.normal >= 0) n = rl::normalize(mesh.normals[static_cast<std::size_t>(c.normal)]);
+            if (rl::length(n) == 0) {
+                ++not_from_obj;
+                if (averaged.empty()) averaged = vertex_normals(mesh, weighting);
+                n = averaged[static_cast<std::size_t>(c.position)];
+                if (rl::length(n) == 0) n = rl::normalize(area_normal(mesh, face));
+            }
+            out.push_back(n);
+        }
+    if (computed) *computed = not_from_obj;
+    return out;
+}
+
+rl::mat3 linear_part(const rl::mat4& m) {
+    rl::mat3 out;
+    for (std::size_t r = 0; r < 3; ++r) out[r] = m[r].xyz();
+    return out;
+}
+
+// [doc:normal-matrix]
+std::optional<rl::mat3> normal_matrix(const rl::mat4& model) {
+    const std::optional<rl::mat3> inverse = rl::inverse(linear_part(model));
+    if (!inverse) return std::nullopt;
+    return rl::transpose(*inverse);
+}
+// [/doc:normal-matrix]
+
+}  // namespace shading

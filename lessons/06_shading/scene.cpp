@@ -1,0 +1,59 @@
+#include "scene.hpp"
+
+#include "rasterlab/transform.hpp"
+
+namespace shading {
+
+LitModel load_lit_model(const std::filesystem::path& path, const rl::mat4& transform, Output output,
+                        Weighting weighting, std::vector<std::string>& warnings) {
+    LitModel lit{perspective::load_model(path, transform, warnings,
+                                         output == Output::srgb ? &srgb_texels() : nullptr),
+                 {},
+                 0};
+    lit.normals = corner_normals(lit.model.mesh, weighting, &lit.computed_normals);
+    return lit;
+}
+
+std::vector<LitModel> default_scene(Output output, Weighting weighting,
+                                    std::vector<std::string>& warnings) {
+    std::vector<LitModel> models;
+    const auto add = [&](const char* name, const rl::Trs& trs) {
+        models.push_back(
+            load_lit_model(rl::project_model(name), rl::compose(trs), output, weighting, warnings));
+    };
+    add("floor", {.scale = {2.2f, 2.2f, 2.2f}});
+    add("globe",
+        {.translation = {-0.95f, 0.9f, -0.2f}, .rotation = rl::axis_angle({0, 1, 0}, -40)});
+    add("torus", {.translation = {1.05f, 0.92f, 0.3f}, .rotation = rl::axis_angle({0, 1, 0}, -25)});
+    return models;
+}
+
+// [doc:render-lit]
+perspective::PipelineCounts render(const std::vector<LitModel>& models,
+                                   const perspective::Camera& camera, const ShadingOptions& options,
+                                   zbuffer::Frame& frame) {
+    const float aspect =
+        static_cast<float>(frame.colour.width()) / static_cast<float>(frame.colour.height());
+    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    perspective::PipelineCounts counts;
+    for (const LitModel& lit : models) {
+        const perspective::Model& m = lit.model;
+        const rl::mat4 mvp = view_projection * m.transform;
+        if (options.pipeline.cull_objects && perspective::outside_frustum(m.box, mvp)) {
+            ++counts.objects_culled;
+            continue;
+        }
+        const std::optional<rl::mat3> normals = normal_matrix(m.transform);
+        if (!normals) continue;  // a flattened model (a zero scale) has no surface to light
+        Uniforms u{m.transform, *normals, mvp, camera.eye, options.lighting, &m.texture, {}, {}};
+        u.sampler.filter = options.filter;
+        u.sampler.encoding = options.output == Output::srgb ? &srgb_texels() : nullptr;
+        const Surface surface{m.mesh, lit.normals, rl::determinant(linear_part(m.transform)) < 0};
+        counts +=
+            draw_model(options.model, surface, u, frame.target(), options.pipeline, options.output);
+    }
+    return counts;
+}
+// [/doc:render-lit]
+
+}  // namespace shading

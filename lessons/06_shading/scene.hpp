@@ -1,0 +1,41 @@
+// Lesson 06's scene: lesson 05's models with a normal at every corner, lit
+// by the shading model of your choice in linear light (or naively, to see
+// the difference).
+//
+//   std::vector<shading::LitModel> models = shading::default_scene(Output::srgb, warnings);
+//   shading::render(models, camera, options, frame);
+#pragma once
+
+#include "05_perspective/scene.hpp"
+#include "shaders.hpp"
+
+namespace shading {
+
+struct LitModel {
+    perspective::Model model;
+    std::vector<rl::vec3> normals;     // 3 per face
+    std::size_t computed_normals = 0;  // corners the OBJ gave no (usable) normal for
+};
+
+// Textures are decoded as sRGB when the output is sRGB (linear light), and
+// read as plain bytes when it is naive.
+LitModel load_lit_model(const std::filesystem::path& path, const rl::mat4& transform, Output output,
+                        Weighting weighting, std::vector<std::string>& warnings);
+
+// The default: the floor, the globe and the torus standing beside it.
+std::vector<LitModel> default_scene(Output output, Weighting weighting,
+                                    std::vector<std::string>& warnings);
+
+struct ShadingOptions {
+    perspective::PipelineOptions pipeline;
+    Model model = Model::blinn_phong;
+    Output output = Output::srgb;
+    Lighting<float> lighting = default_lighting(rl::vec3{0.3f, 0.5f, 1.0f});
+    textures::Filter filter = textures::Filter::trilinear;
+};
+
+perspective::PipelineCounts render(const std::vector<LitModel>& models,
+                                   const perspective::Camera& camera, const ShadingOptions& options,
+                                   zbuffer::Frame& frame);
+
+}  // namespace shading

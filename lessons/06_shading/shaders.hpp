@@ -1,0 +1,129 @@
+// The lesson's four shading models as shaders, sharing one set of uniforms:
+//   flat        one normal per face, lit once per face (at its first vertex);
+//   gouraud     lit at each vertex with its own normal, the light interpolated;
+//   phong       the normal interpolated and lit at each pixel, Phong's specular;
+//   blinn-phong the same with Blinn's half-vector specular.
+// The albedo comes from the diffuse texture at each pixel in every model.
+//
+//   const shading::Uniforms u = shading::uniforms(model, view_projection, eye, lighting, &chain);
+//   shading::draw(surface, shading::PhongShader{u, shading::Specular::blinn_phong}, target, {});
+#pragma once
+
+#include "04_textures/sampling.hpp"
+#include "lighting.hpp"
+#include "shader.hpp"
+
+namespace shading {
+
+enum class Model { flat, gouraud, phong, blinn_phong };
+inline constexpr std::array<rl::Named<Model>, 4> kModelNames = {
+    {{Model::flat, "flat"},
+     {Model::gouraud, "gouraud"},
+     {Model::phong, "phong"},
+     {Model::blinn_phong, "blinn-phong"}}};
+inline constexpr std::array<Model, 4> kModels = rl::values_of(kModelNames);
+inline const char* name(Model value) {
+    return rl::name_in(kModelNames, value);
+}
+
+// What every shader of this lesson reads and no vertex changes.
+struct Uniforms {
+    rl::mat4 model;    // model to world
+    rl::mat3 normals;  // normal_matrix(model)
+    rl::mat4 model_view_projection;
+    rl::vec3 eye;  // world space
+    Lighting<float> lighting;
+    const textures::MipChain* texture = nullptr;  // none: albedo `colour`
+    textures::SamplerState sampler;
+    rl::vec3 colour{0.8f, 0.8f, 0.8f};  // linear albedo without a texture
+
+    rl::vec3 world(rl::vec3 p) const { return (model * rl::extend(p, 1.0f)).xyz(); }
+    rl::vec3 world_normal(rl::vec3 n) const { return rl::normalize(normals * n); }
+    rl::vec4 clip(rl::vec3 p) const { return model_view_projection * rl::extend(p, 1.0f); }
+    // The diffuse colour at a pixel: the texture (mip level from the pixel's
+    // UV derivatives, lesson 05) or the plain colour.
+    rl::vec3 albedo(rl::vec2 uv, rl::vec2 d_dx, rl::vec2 d_dy) const;
+};
+
+// The light reflected at a vertex, for flat and Gouraud shading (the
+// albedo still multiplies its diffuse part at each pixel).
+Reflection<float> light_at(const Uniforms& u, rl::vec3 world_position, rl::vec3 world_normal);
+
+// [doc:flat-shader]
+struct FlatShader {
+    const Uniforms& u;
+    struct Varyings {
+        Flat<Reflection<float>> light;  // the same for the whole face
+        rl::vec2 uv;
+        friend Varyings operator+(const Varyings& a, const Varyings& b) {
+            return {a.light + b.light, a.uv + b.uv};
+        }
+        friend Varyings operator*(const Varyings& a, float s) { return {a.light * s, a.uv * s}; }
+    };
+    perspective::ClipVertex<Varyings> vertex(const VertexInput& in) const {
+        return {u.clip(in.position),
+                {{light_at(u, u.world(in.position), u.world_normal(in.face_normal))}, in.uv}};
+    }
+    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+        const Reflection<float>& l = f.varyings.light.value;
+        return u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv) * l.diffuse + l.specular;
+    }
+};
+// [/doc:flat-shader]
+
+struct GouraudShader {
+    const Uniforms& u;
+    struct Varyings {
+        rl::vec3 diffuse, specular;  // light computed at the vertices, interpolated
+        rl::vec2 uv;
+        friend Varyings operator+(const Varyings& a, const Varyings& b) {
+            return {a.diffuse + b.diffuse, a.specular + b.specular, a.uv + b.uv};
+        }
+        friend Varyings operator*(const Varyings& a, float s) {
+            return {a.diffuse * s, a.specular * s, a.uv * s};
+        }
+    };
+    perspective::ClipVertex<Varyings> vertex(const VertexInput& in) const {
+        const Reflection<float> l = light_at(u, u.world(in.position), u.world_normal(in.normal));
+        return {u.clip(in.position), {l.diffuse, l.specular, in.uv}};
+    }
+    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+        return u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv) * f.varyings.diffuse +
+               f.varyings.specular;
+    }
+};
+
+// [doc:phong-shader]
+struct PhongShader {
+    const Uniforms& u;
+    Specular specular;  // Phong's or Blinn's highlight
+    struct Varyings {
+        rl::vec3 position, normal;  // world space, interpolated across the face
+        rl::vec2 uv;
+        friend Varyings operator+(const Varyings& a, const Varyings& b) {
+            return {a.position + b.position, a.normal + b.normal, a.uv + b.uv};
+        }
+        friend Varyings operator*(const Varyings& a, float s) {
+            return {a.position * s, a.normal * s, a.uv * s};
+        }
+    };
+    perspective::ClipVertex<Varyings> vertex(const VertexInput& in) const {
+        return {u.clip(in.position), {u.world(in.position), u.world_normal(in.normal), in.uv}};
+    }
+    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+        // An interpolated unit normal is shorter than 1 between the vertices:
+        // normalise it again, or the light dims and the highlight spreads.
+        const rl::vec3 n = rl::normalize(f.varyings.normal);
+        const rl::vec3 to_eye = rl::normalize(u.eye - f.varyings.position);
+        return reflected(u.lighting, n, to_eye, u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv),
+                         specular);
+    }
+};
+// [/doc:phong-shader]
+
+// Draws the surface with the chosen shading model.
+perspective::PipelineCounts draw_model(Model model, const Surface& surface, const Uniforms& u,
+                                       perspective::RenderTarget target,
+                                       const perspective::PipelineOptions& options, Output output);
+
+}  // namespace shading

@@ -1,0 +1,40 @@
+// The lab's ground truth for shading: a sphere lit analytically. At every
+// pixel centre a ray from the eye meets the exact sphere in double; its
+// exact normal and the same lights give the colour the shading models try
+// to reach with a triangle mesh. Also the meshes they draw: UV spheres of
+// any tessellation, with exact normals at the vertices.
+//
+//   const rl::Mesh mesh = shading::uv_sphere(64);
+//   const rl::Image truth = shading::sphere_truth(camera, 256, 256, lighting, albedo,
+//                                                 shading::Specular::blinn_phong);
+#pragma once
+
+#include "05_perspective/camera.hpp"
+#include "colour.hpp"
+#include "lighting.hpp"
+#include "rasterlab/image.hpp"
+#include "rasterlab/mesh.hpp"
+
+namespace shading {
+
+// A unit sphere at the origin: `segments` around, segments / 2 from pole to
+// pole, each vertex's normal its exact position.
+rl::Mesh uv_sphere(int segments);
+
+// The unit sphere at the origin as the camera sees it, lit by `lighting`
+// (converted to double) with the same specular model; background elsewhere.
+// `output` encodes as the program would: sRGB, or (naive) the light as bytes.
+rl::Image sphere_truth(const perspective::Camera& camera, int width, int height,
+                       const Lighting<float>& lighting, rl::vec3 albedo, Specular specular,
+                       rl::Rgba background);
+
+// RMSE (0..255) over the pixels where `a` or `b` differs from the
+// background: over the sphere and its silhouette in either image.
+struct SphereError {
+    double rmse = 0;           // over the union of both spheres
+    double interior_rmse = 0;  // over pixels both images cover
+    long pixels = 0, interior = 0;
+};
+SphereError compare_spheres(const rl::Image& truth, const rl::Image& image, rl::Rgba background);
+
+}  // namespace shading

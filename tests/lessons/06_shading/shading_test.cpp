@@ -1,0 +1,270 @@
+// Lesson 06's stability cases and pitfalls: sRGB round trips, mip chains in
+// linear light, normals (degenerate faces, zero length, weighting, the normal
+// matrix under non-uniform and negative scale), renormalising interpolated
+// normals, grazing light and extreme exponents, flat varyings, discarding
+// shaders, and linear light against the analytic sphere.
+// docs/06_shading.md links each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "03_zbuffer/hidden_surfaces.hpp"
+#include "06_shading/scene.hpp"
+#include "06_shading/sphere_truth.hpp"
+#include "rasterlab/texture_files.hpp"
+#include "rasterlab/transform.hpp"
+
+namespace {
+
+using namespace shading;
+
+TEST(ShadingTest, EverySrgbByteDecodesAndEncodesBackToItself) {
+    for (int i = 0; i < 256; ++i) {
+        const float linear = srgb_texels().value[static_cast<std::size_t>(i)];
+        EXPECT_EQ(srgb_texels().to_byte(linear), i);
+    }
+    EXPECT_EQ(encode({0.5f, 0.5f, 0.5f}, Output::srgb).r, 188);  // half the light is byte 188
+    EXPECT_EQ(encode({0.5f, 0.5f, 0.5f}, Output::naive).r, 128);
+}
+
+TEST(ShadingTest, MipChainsInLinearLightKeepTheCheckersBrightness) {
+    std::vector<std::string> warnings;
+    const rl::Mesh floor = rl::load_obj(rl::project_model("floor"), &warnings);
+    const rl::Texture t = rl::load_texture(floor, 0, rl::TextureRole::diffuse, warnings);
+    ASSERT_FALSE(t.is_default);
+    const textures::MipChain bytes(t.image), linear(t.image, &srgb_texels());
+    const rl::Rgba a = bytes.level(bytes.levels() - 1).get(0, 0);
+    const rl::Rgba b = linear.level(linear.levels() - 1).get(0, 0);
+    EXPECT_NEAR(a.r, 137, 1) << int(a.g) << " " << int(a.b);  // the byte average: too dark
+    EXPECT_NEAR(b.r, 162, 1) << int(b.g) << " " << int(b.b);  // the light it reflects, on average
+}
+
+rl::Mesh parse(const std::string& obj) {
+    return rl::parse_obj(obj, "", "test.obj");
+}
+
+TEST(ShadingTest, ZeroLengthNormalsFallBackToComputedOnes) {
+    const rl::Mesh mesh = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 0\nf 1//1 2//1 3//1\n");
+    std::size_t computed = 0;
+    const std::vector<rl::vec3> n = corner_normals(mesh, Weighting::angle, &computed);
+    EXPECT_EQ(computed, 3u);
+    for (const rl::vec3& v : n) EXPECT_NEAR(v.z, 1.0f, 1e-6f);
+}
+
+TEST(ShadingTest, DegenerateFacesAddNothingToVertexNormals) {
+    // A unit square in z = 0, then a zero-area face on its corner, and a face
+    // with a repeated vertex: no NaN, and the same normals as without them.
+    const std::string square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nf 1 3 4\n";
+    for (Weighting w : kWeightings) {
+        const std::vector<rl::vec3> clean = vertex_normals(parse(square), w);
+        const std::vector<rl::vec3> dirty =
+            vertex_normals(parse(square + "v 2 0 0\nf 1 2 5\nf 1 1 3\n"), w);
+        for (int i = 0; i < 4; ++i) {
+            EXPECT_TRUE(std::isfinite(dirty[static_cast<std::size_t>(i)].z)) << name(w);
+            EXPECT_NEAR(dirty[static_cast<std::size_t>(i)].z, clean[static_cast<std::size_t>(i)].z,
+                        1e-6f)
+                << name(w);
+        }
+    }
+}
+
+// The corner of a cube: three faces, each a square cut into two triangles,
+// either both touching the corner or only one of them. The angle-weighted
+// normal is (1, 1, 1)/sqrt(3) either way; the area-weighted one depends on
+// the cut.
+TEST(ShadingTest, AngleWeightingDoesNotDependOnHowFacesAreCut) {
+    const std::string v = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\n";
+    // Faces around vertex 1 (the origin), outward normals -x, -y, -z.
+    const std::string through = "f 1 4 3\nf 1 3 2\nf 1 5 7\nf 1 7 4\nf 1 2 6\nf 1 6 5\n";
+    const std::string beside = "f 1 4 2\nf 4 3 2\nf 1 5 7\nf 1 7 4\nf 1 2 6\nf 1 6 5\n";
+    const float k = -1.0f / std::sqrt(3.0f);
+    for (const std::string& faces : {through, beside}) {
+        const rl::vec3 n = vertex_normals(parse(v + faces), Weighting::angle)[0];
+        EXPECT_NEAR(n.x, k, 1e-5f);
+        EXPECT_NEAR(n.y, k, 1e-5f);
+        EXPECT_NEAR(n.z, k, 1e-5f);
+    }
+    const rl::vec3 a = vertex_normals(parse(v + through), Weighting::area)[0];
+    const rl::vec3 b = vertex_normals(parse(v + beside), Weighting::area)[0];
+    EXPECT_GT(rl::length(a - b), 0.01f);
+}
+
+// Largest angle (degrees) between a transformed normal and the true normal
+// of the transformed sphere, over all vertices.
+double worst_normal_error(const rl::mat4& model, bool use_normal_matrix) {
+    const rl::Mesh sphere = uv_sphere(32);
+    const rl::mat3 m = linear_part(model);
+    const rl::mat3 n = use_normal_matrix ? *normal_matrix(model) : m;
+    const std::optional<rl::mat3> inverse = rl::inverse(m);
+    double worst = 0;
+    for (std::size_t i = 0; i < sphere.positions.size(); ++i) {
+        // The image of the unit sphere is {q : |M^-1 q| = 1}; its gradient
+        // there, M^-T M^-1 q = M^-T p, is the true normal.
+        const rl::vec3 truth = rl::normalize(rl::transpose(*inverse) * sphere.positions[i]);
+        const rl::vec3 got = rl::normalize(n * sphere.normals[i]);
+        worst = std::max(worst, std::acos(std::clamp(double(rl::dot(truth, got)), -1.0, 1.0)) *
+                                    180 / 3.14159265358979);
+    }
+    return worst;
+}
+
+TEST(ShadingTest, NormalMatrixKeepsNormalsPerpendicularUnderNonUniformScale) {
+    const rl::mat4 squash =
+        rl::compose({.rotation = rl::axis_angle({0, 0, 1}, 30), .scale = {2.0f, 0.5f, 1.0f}});
+    EXPECT_LT(worst_normal_error(squash, true), 0.1);    // float rounding
+    EXPECT_GT(worst_normal_error(squash, false), 30.0);  // the model matrix itself: wrong
+}
+
+TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
+    const rl::mat4 mirror = rl::compose({.scale = {-1.5f, 1.0f, 0.7f}});
+    EXPECT_LT(worst_normal_error(mirror, true), 0.1);
+    // Drawn: a mirrored model turns its faces clockwise; the surface knows,
+    // so front faces are still drawn and the lit side still faces the light.
+    const rl::Mesh sphere = uv_sphere(32);
+    const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
+    perspective::Camera camera;
+    camera.eye = {0, 0, 4};
+    camera.near = 1;
+    camera.far = 10;
+    const rl::mat4 mvp = perspective::view_projection(camera, 1.0f) * mirror;
+    Uniforms u{mirror,
+               *normal_matrix(mirror),
+               mvp,
+               camera.eye,
+               default_lighting(rl::vec3{1, 0, 0.3f}),
+               nullptr,
+               {},
+               {0.8f, 0.8f, 0.8f}};
+    u.lighting.lights.resize(1);
+    zbuffer::Frame frame(64, 64);
+    const perspective::PipelineCounts counts = draw_model(
+        Model::blinn_phong, Surface{sphere, normals, true}, u, frame.target(), {}, Output::srgb);
+    EXPECT_GT(counts.fragments, 1000u);
+    // Lit from +x: the right half is brighter than the left.
+    EXPECT_GT(frame.colour.get(44, 32).r, frame.colour.get(20, 32).r + 40);
+}
+
+TEST(ShadingTest, InterpolatedNormalsAreRenormalised) {
+    // Halfway between two unit normals 90 degrees apart, the interpolated
+    // normal has length 0.71: lit as it is, the light would dim by 29%.
+    const Lighting<float> lighting = [] {
+        Lighting<float> l;
+        l.lights.push_back({rl::normalize(rl::vec3{1, 1, 0}), {1, 1, 1}});
+        l.ambient = {};
+        return l;
+    }();
+    Uniforms u{rl::mat4::identity(),
+               rl::mat3::identity(),
+               rl::mat4::identity(),
+               {0, 0, 5},
+               lighting,
+               nullptr,
+               {},
+               {1, 1, 1}};
+    const PhongShader shader{u, Specular::blinn_phong};
+    const perspective::TriangleSetup<PhongShader::Varyings> setup{};
+    const PhongShader::Varyings halfway{
+        {0, 0, 0}, rl::vec3{1, 0, 0} * 0.5f + rl::vec3{0, 1, 0} * 0.5f, {}};
+    const rl::vec3 c = shader.fragment({0, 0, 0.5f, halfway, 1.0f, &setup});
+    const float expected = 1.0f;  // n = l: full diffuse light (plus the highlight, >= 0)
+    EXPECT_GE(c.x, expected - 1e-5f);
+}
+
+TEST(ShadingTest, GrazingLightAndExtremeExponentsStayFinite) {
+    for (float shininess : {0.0f, 1.0f, 1e6f}) {
+        Lighting<float> l = default_lighting(rl::vec3{1, 1e-7f, 0});  // grazing a +y normal
+        l.shininess = shininess;
+        for (Specular s : {Specular::phong, Specular::blinn_phong}) {
+            const rl::vec3 c =
+                reflected(l, {0, 1, 0}, rl::normalize(rl::vec3{0, 1, 1}), {0.5f, 0.5f, 0.5f}, s);
+            EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+            EXPECT_GE(c.x, 0.0f);
+        }
+    }
+    // Exponent 0: the highlight is the whole specular colour wherever lit.
+    Lighting<float> l;
+    l.lights.push_back({{0, 0, 1}, {1, 1, 1}});
+    l.shininess = 0;
+    l.ambient = {};
+    EXPECT_NEAR(reflected(l, {0, 0, 1}, {1, 0, 0}, {0, 0, 0}, Specular::phong).x, l.specular.x,
+                1e-6f);
+}
+
+TEST(ShadingTest, FlatVaryingsKeepTheFirstVertexValue) {
+    const Flat<float> a{1}, b{2}, c{3};
+    const Flat<float> mixed = a * 0.2f + b * 0.3f + c * 0.5f;
+    EXPECT_EQ(mixed.value, 1.0f);
+}
+
+// A shader that discards every pixel must leave the depth buffer alone, so
+// that what lies behind is still drawn (the late depth test).
+struct DiscardEverything {
+    rl::mat4 mvp;
+    using Varyings = float;
+    perspective::ClipVertex<float> vertex(const VertexInput& in) const {
+        return {mvp * rl::extend(in.position, 1.0f), 0.0f};
+    }
+    std::optional<rl::vec3> fragment(const perspective::Fragment<float>&) const {
+        return std::nullopt;
+    }
+};
+
+struct Paint {
+    rl::mat4 mvp;
+    using Varyings = float;
+    perspective::ClipVertex<float> vertex(const VertexInput& in) const {
+        return {mvp * rl::extend(in.position, 1.0f), 0.0f};
+    }
+    rl::vec3 fragment(const perspective::Fragment<float>&) const { return {1, 0, 0}; }
+};
+
+TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
+    const rl::Mesh quad = parse("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
+    const std::vector<rl::vec3> normals = corner_normals(quad, Weighting::area);
+    const rl::mat4 near = rl::compose({.translation = {0, 0, 0.5f}});
+    const rl::mat4 far = rl::compose({.translation = {0, 0, -0.5f}});
+    const rl::mat4 ortho = rl::mat4::identity();
+    zbuffer::Frame frame(16, 16);
+    const Surface surface{quad, normals};
+    draw(surface, DiscardEverything{ortho * near}, frame.target(), {}, Output::naive);
+    const perspective::PipelineCounts counts =
+        draw(surface, Paint{ortho * far}, frame.target(), {}, Output::naive);
+    EXPECT_EQ(counts.fragments, 256u);
+    EXPECT_EQ(frame.colour.get(8, 8).r, 255);
+}
+
+TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
+    perspective::Camera camera;
+    camera.eye = {0, 0, 3.2f};
+    camera.fov_y = 45;
+    camera.near = 1;
+    camera.far = 10;
+    const Lighting<float> lighting = default_lighting(rl::vec3{0.5f, 0.6f, 1.0f});
+    const rl::vec3 albedo{0.8f, 0.35f, 0.2f};
+    const rl::Image truth =
+        sphere_truth(camera, 96, 96, lighting, albedo, Specular::blinn_phong, rl::kBackground);
+    const rl::Mesh sphere = uv_sphere(64);
+    const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
+    double error[2];
+    for (Output o : kOutputs) {
+        Uniforms u{rl::mat4::identity(),
+                   rl::mat3::identity(),
+                   perspective::view_projection(camera, 1.0f),
+                   camera.eye,
+                   lighting,
+                   nullptr,
+                   {},
+                   albedo};
+        if (o == Output::naive)
+            u.colour = {linear_to_srgb(albedo.x), linear_to_srgb(albedo.y),
+                        linear_to_srgb(albedo.z)};
+        zbuffer::Frame frame(96, 96);
+        draw_model(Model::blinn_phong, Surface{sphere, normals}, u, frame.target(), {}, o);
+        error[o == Output::srgb ? 0 : 1] =
+            compare_spheres(truth, frame.colour, rl::kBackground).interior_rmse;
+    }
+    EXPECT_LT(error[0], 3.0);
+    EXPECT_GT(error[1], 4 * error[0]);
+}
+
+}  // namespace
