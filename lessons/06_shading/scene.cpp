@@ -21,10 +21,10 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
         models.push_back(
             load_lit_model(rl::project_model(name), rl::compose(trs), output, weighting, warnings));
     };
-    add("floor", {.scale = {2.2f, 2.2f, 2.2f}});
+    add("floor", {.scale = {1.7f, 1.7f, 1.7f}});
     add("globe",
-        {.translation = {-0.95f, 0.9f, -0.2f}, .rotation = rl::axis_angle({0, 1, 0}, -40)});
-    add("torus", {.translation = {1.05f, 0.92f, 0.3f}, .rotation = rl::axis_angle({0, 1, 0}, -25)});
+        {.translation = {-0.8f, 0.9f, -0.25f}, .rotation = rl::axis_angle({0, 1, 0}, -40)});
+    add("torus", {.translation = {0.8f, 0.92f, 0.35f}, .rotation = rl::axis_angle({0, 1, 0}, -25)});
     return models;
 }
 
