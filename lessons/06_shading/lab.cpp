@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
                          Specular::phong, rl::kBackground);
         rl::ResultsTable shading(
             {"model", "segments", "triangles", "ns_per_pixel", "rmse", "interior_rmse", "pixels"});
-        rl::ResultsTable linear({"output", "segments", "rmse", "interior_rmse"});
+        rl::ResultsTable linear({"output", "segments", "ns_per_pixel", "rmse", "interior_rmse"});
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const Case& c = cases[i];
             const rl::Image& truth =
@@ -117,6 +117,8 @@ int main(int argc, char** argv) {
                                  e.rmse, e.interior_rmse, static_cast<long long>(e.pixels)});
             } else {
                 linear.add_row({std::string(name(c.output)), static_cast<long long>(c.segments),
+                                timings.at(bench_name(c)).median_ns /
+                                    static_cast<double>(std::max(e.pixels, 1L)),
                                 e.rmse, e.interior_rmse});
             }
         }
