@@ -1,8 +1,9 @@
 // Lesson 06's lab: the four shading models on UV spheres of 8 to 256
 // segments against the analytic sphere (exact normal per pixel, lit in
 // double with the same lights), timed per frame; and lighting in linear
-// light against lighting the sRGB bytes naively. Writes 06_shading.csv and
-// 06_linear.csv.
+// light against lighting the sRGB bytes naively; and vertex normals averaged
+// by area or angle against the exact ones. Writes 06_shading.csv,
+// 06_linear.csv and 06_normals.csv.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -54,6 +55,10 @@ void draw_case(benchmark::State& state, const Setup* s, const Case* c) {
     for (auto _ : state) benchmark::DoNotOptimize(draw_sphere(*s, *c).get(0, 0));
 }
 
+void average_normals(benchmark::State& state, const rl::Mesh* mesh, Weighting w) {
+    for (auto _ : state) benchmark::DoNotOptimize(vertex_normals(*mesh, w).data());
+}
+
 Specular specular_of(Model m) {
     return m == Model::phong ? Specular::phong : Specular::blinn_phong;
 }
@@ -93,6 +98,17 @@ int main(int argc, char** argv) {
         for (const Case& c : cases)
             benchmark::RegisterBenchmark(bench_name(c).c_str(), draw_case, &setup, &c)
                 ->Unit(benchmark::kMicrosecond);
+        // Vertex normals averaged by area or by angle, against the exact ones.
+        std::vector<rl::Mesh> spheres;
+        for (int n : levels) spheres.push_back(uv_sphere(n));
+        const auto normals_name = [](int n, Weighting w) {
+            return std::string("normals/") + std::to_string(n) + "/" + name(w);
+        };
+        for (std::size_t i = 0; i < spheres.size(); ++i)
+            for (Weighting w : kWeightings)
+                benchmark::RegisterBenchmark(normals_name(levels[i], w).c_str(), average_normals,
+                                             &spheres[i], w)
+                    ->Unit(benchmark::kMicrosecond);
         const auto timings = rl::lab::run_benchmarks();
 
         const rl::Image truth_blinn =
@@ -122,9 +138,22 @@ int main(int argc, char** argv) {
                                 e.rmse, e.interior_rmse});
             }
         }
+        rl::ResultsTable normals(
+            {"weighting", "segments", "ns_per_vertex", "mean_error_degrees", "max_error_degrees"});
+        for (std::size_t i = 0; i < spheres.size(); ++i)
+            for (Weighting w : kWeightings) {
+                const NormalError e =
+                    sphere_normal_error(spheres[i], vertex_normals(spheres[i], w));
+                normals.add_row({std::string(name(w)), static_cast<long long>(levels[i]),
+                                 timings.at(normals_name(levels[i], w)).median_ns /
+                                     static_cast<double>(spheres[i].positions.size()),
+                                 e.mean, e.max});
+            }
+        normals.write_csv(options.out_dir / "06_normals.csv");
         shading.write_csv(options.out_dir / "06_shading.csv");
         linear.write_csv(options.out_dir / "06_linear.csv");
-        std::printf("%s\n%s", shading.to_csv().c_str(), linear.to_csv().c_str());
+        std::printf("%s\n%s\n%s", shading.to_csv().c_str(), linear.to_csv().c_str(),
+                    normals.to_csv().c_str());
         return 0;
     });
 }

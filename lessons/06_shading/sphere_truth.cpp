@@ -7,10 +7,17 @@ namespace shading {
 
 rl::Mesh uv_sphere(int segments) {
     rl::Mesh mesh;
-    const int rings = std::max(2, segments / 2);
     segments = std::max(3, segments);
+    const int rings = std::max(2, segments / 2);
+    // Positions (and their exact normals) are shared around the seam and at
+    // the poles, as in an OBJ file; texture coordinates are not.
+    const auto position = [&](int i, int j) {
+        if (j == 0) return 0;
+        if (j == rings) return 1 + (rings - 1) * segments;
+        return 1 + (j - 1) * segments + i % segments;
+    };
     for (int j = 0; j <= rings; ++j)
-        for (int i = 0; i <= segments; ++i) {
+        for (int i = 0; i < ((j == 0 || j == rings) ? 1 : segments); ++i) {
             const double theta = std::numbers::pi * j / rings;  // from the north pole
             const double phi = 2 * std::numbers::pi * i / segments;
             const rl::vec3 p{static_cast<float>(std::sin(theta) * std::cos(phi)),
@@ -18,18 +25,37 @@ rl::Mesh uv_sphere(int segments) {
                              static_cast<float>(-std::sin(theta) * std::sin(phi))};
             mesh.positions.push_back(p);
             mesh.normals.push_back(p);
-            mesh.uvs.push_back({float(i) / segments, 1.0f - float(j) / rings});
         }
-    const auto at = [&](int i, int j) { return j * (segments + 1) + i; };
+    for (int j = 0; j <= rings; ++j)
+        for (int i = 0; i <= segments; ++i)
+            mesh.uvs.push_back({float(i) / segments, 1.0f - float(j) / rings});
+    const auto corner = [&](int i, int j) {
+        const int p = position(i, j);
+        return rl::Corner{p, j * (segments + 1) + i, p};
+    };
     for (int j = 0; j < rings; ++j)
         for (int i = 0; i < segments; ++i) {
-            const int a = at(i, j), b = at(i, j + 1), c = at(i + 1, j + 1), d = at(i + 1, j);
-            const auto corner = [](int k) { return rl::Corner{k, k, k}; };
-            // Counter-clockwise seen from outside; the pole rows' degenerate halves are left out.
-            if (j != 0) mesh.faces.push_back({{corner(a), corner(b), corner(d)}, -1});
-            if (j != rings - 1) mesh.faces.push_back({{corner(b), corner(c), corner(d)}, -1});
+            const rl::Corner a = corner(i, j), b = corner(i, j + 1), c = corner(i + 1, j + 1),
+                             d = corner(i + 1, j);
+            // Counter-clockwise seen from outside; the poles' degenerate halves are left out.
+            if (j != 0) mesh.faces.push_back({{a, b, d}, -1});
+            if (j != rings - 1) mesh.faces.push_back({{b, c, d}, -1});
         }
     return mesh;
+}
+
+NormalError sphere_normal_error(const rl::Mesh& sphere, const std::vector<rl::vec3>& normals) {
+    NormalError e;
+    for (std::size_t i = 0; i < normals.size(); ++i) {
+        const rl::dvec3 truth = rl::normalize(rl::cast<double>(sphere.positions[i]));
+        const double c =
+            std::clamp(rl::dot(truth, rl::normalize(rl::cast<double>(normals[i]))), -1.0, 1.0);
+        const double degrees = std::acos(c) * 180 / std::numbers::pi;
+        e.mean += degrees;
+        e.max = std::max(e.max, degrees);
+    }
+    if (!normals.empty()) e.mean /= static_cast<double>(normals.size());
+    return e;
 }
 
 rl::Image sphere_truth(const perspective::Camera& camera, int width, int height,

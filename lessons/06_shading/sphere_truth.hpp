@@ -18,8 +18,16 @@
 namespace shading {
 
 // A unit sphere at the origin: `segments` around, segments / 2 from pole to
-// pole, each vertex's normal its exact position.
+// pole, each vertex's normal its exact position; positions are shared across
+// the texture seam and at the poles, as in an OBJ file.
 rl::Mesh uv_sphere(int segments);
+
+// Mean and largest angle (degrees) between averaged vertex normals and the
+// exact ones of the unit sphere.
+struct NormalError {
+    double mean = 0, max = 0;
+};
+NormalError sphere_normal_error(const rl::Mesh& sphere, const std::vector<rl::vec3>& normals);
 
 // The unit sphere at the origin as the camera sees it, lit by `lighting`
 // (converted to double) with the same specular model; background elsewhere.
