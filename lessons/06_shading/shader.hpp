@@ -6,16 +6,9 @@
 // are inlined, with no virtual call per pixel. Derivation:
 // docs/06_shading.md#shaders.
 //
-//   struct Unlit {                                    // a complete shader
-//       rl::mat4 mvp;
-//       rl::vec3 colour;
-//       using Varyings = float;                       // nothing to carry
-//       perspective::ClipVertex<float> vertex(const shading::VertexInput& in) const {
-//           return {mvp * rl::extend(in.position, 1.0f), 0.0f};
-//       }
-//       rl::vec3 fragment(const perspective::Fragment<float>&) const { return colour; }
-//   };
-//   shading::draw(shading::Surface{mesh, normals}, Unlit{mvp, {1, 0, 0}}, frame.target(), {});
+//   shading::draw(shading::Surface{mesh, normals},
+//                 shading::UnlitShader{mvp, {1, 0, 0}},  // shaders.hpp: a complete shader
+//                 frame.target(), {});
 #pragma once
 
 #include <concepts>

@@ -49,6 +49,19 @@ struct Uniforms {
 // albedo still multiplies its diffuse part at each pixel).
 Reflection<float> light_at(const Uniforms& u, rl::vec3 world_position, rl::vec3 world_normal);
 
+// [doc:unlit-shader]
+// The smallest shader: one colour, no light. A model of how to write one.
+struct UnlitShader {
+    rl::mat4 model_view_projection;
+    rl::vec3 colour;         // linear
+    using Varyings = float;  // nothing to carry to the pixels
+    perspective::ClipVertex<float> vertex(const VertexInput& in) const {
+        return {model_view_projection * rl::extend(in.position, 1.0f), 0.0f};
+    }
+    rl::vec3 fragment(const perspective::Fragment<float>&) const { return colour; }
+};
+// [/doc:unlit-shader]
+
 // [doc:flat-shader]
 struct FlatShader {
     const Uniforms& u;

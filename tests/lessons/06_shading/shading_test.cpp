@@ -209,15 +209,6 @@ struct DiscardEverything {
     }
 };
 
-struct Paint {
-    rl::mat4 mvp;
-    using Varyings = float;
-    perspective::ClipVertex<float> vertex(const VertexInput& in) const {
-        return {mvp * rl::extend(in.position, 1.0f), 0.0f};
-    }
-    rl::vec3 fragment(const perspective::Fragment<float>&) const { return {1, 0, 0}; }
-};
-
 TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
     const rl::Mesh quad = parse("v -1 -1 0\nv 1 -1 0\nv 1 1 0\nv -1 1 0\nf 1 2 3 4\n");
     const std::vector<rl::vec3> normals = corner_normals(quad, Weighting::area);
@@ -228,7 +219,7 @@ TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
     const Surface surface{quad, normals};
     draw(surface, DiscardEverything{ortho * near}, frame.target(), {}, Output::naive);
     const perspective::PipelineCounts counts =
-        draw(surface, Paint{ortho * far}, frame.target(), {}, Output::naive);
+        draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, frame.target(), {}, Output::naive);
     EXPECT_EQ(counts.fragments, 256u);
     EXPECT_EQ(frame.colour.get(8, 8).r, 255);
 }
