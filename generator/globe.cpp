@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "globe_relief.hpp"
 #include "model_builder.hpp"
 #include "models.hpp"
 #include "texture_maps.hpp"
@@ -11,31 +12,9 @@
 namespace assets {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kRadius = 0.9;
+constexpr double kRadius = kGlobeRadius;
 constexpr int kSlices = 64, kStacks = 32;                  // about 4k triangles
 constexpr int kTextureWidth = 1024, kTextureHeight = 512;  // equirectangular
-constexpr double kSeaLevel = 0.02;
-constexpr double kReliefScale = 0.04;  // bump height per unit of noise, in radii
-
-// The parametrisation shared by mesh and textures: u runs east with
-// longitude (u = 0.5 faces +z), v north with latitude (v = 0: south pole).
-struct SpherePoint {
-    dvec3 normal, tangent, bitangent;  // N, T = dP/du, B = dP/dv, normalised
-};
-
-SpherePoint sphere_point(double u, double v) {
-    const double phi = 2 * kPi * (u - 0.5), theta = kPi * (v - 0.5);
-    const double cp = std::cos(phi), sp = std::sin(phi), ct = std::cos(theta), st = std::sin(theta);
-    return {{ct * sp, st, ct * cp}, {cp, 0, -sp}, {-st * sp, ct, -st * cp}};
-}
-
-double terrain(dvec3 p) {
-    return fbm(p * 1.7 + dvec3{3.1, 7.3, 1.9}, 7);
-}
-double relief(dvec3 p) {
-    return std::max(terrain(p) - kSeaLevel, 0.0);
-}
 
 Model globe_mesh() {
     Model m;
@@ -82,7 +61,7 @@ Model globe_mesh() {
 
 // The colour of the ground at a point of the unit sphere.
 dvec3 surface_colour(dvec3 p) {
-    const double h = terrain(p) - kSeaLevel;
+    const double h = globe_terrain(p) - kGlobeSeaLevel;
     if (h < 0) return mix({0.02, 0.07, 0.24}, {0.08, 0.32, 0.55}, smoothstep(-0.35, 0.0, h));
     const double ice = smoothstep(0.95, 0.98, std::abs(p.y) + 0.05 * fbm(p * 9.0, 3));
     dvec3 land = mix({0.18, 0.42, 0.13}, {0.52, 0.42, 0.26}, smoothstep(0.05, 0.4, h));
@@ -99,26 +78,19 @@ void make_globe(const std::filesystem::path& dir) {
     rl::Image tangent_space(kTextureWidth, kTextureHeight),
         object_space(kTextureWidth, kTextureHeight);
     HeightField height(kTextureWidth, kTextureHeight);
-    const double eps = 1e-3;  // step along the surface for the relief's gradient
     for (int y = 0; y < kTextureHeight; ++y)
         for (int x = 0; x < kTextureWidth; ++x) {
             const SpherePoint s =
                 sphere_point((x + 0.5) / kTextureWidth, (y + 0.5) / kTextureHeight);
             const dvec3 p = s.normal;
-            height.set(x, y, relief(p));
+            height.set(x, y, globe_relief(p));
             diffuse.set(x, y, to_rgba(surface_colour(p)));
-            const bool ocean = terrain(p) < kSeaLevel;
+            const bool ocean = globe_terrain(p) < kGlobeSeaLevel;
             const double shine = ocean ? 0.9 : 0.1;
             specular.set(x, y, to_rgba({shine, shine, shine}));
 
-            // Slope of the relief along T and B, by central differences on the sphere.
-            auto along = [&](dvec3 dir3) {
-                return (relief(rl::normalize(p + dir3 * eps)) -
-                        relief(rl::normalize(p - dir3 * eps))) /
-                       (2 * eps);
-            };
-            const double slope_t = kReliefScale * along(s.tangent);
-            const double slope_b = kReliefScale * along(s.bitangent);
+            const Slopes slope = globe_slopes(s);
+            const double slope_t = slope.along_tangent, slope_b = slope.along_bitangent;
             // The bumped normal, in tangent space (T, B, N) and in object space.
             tangent_space.set(x, y, encode_normal({-slope_t, -slope_b, 1}));
             object_space.set(x, y,
