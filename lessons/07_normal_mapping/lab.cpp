@@ -1,0 +1,204 @@
+// Lesson 07's lab: the normal each method puts at each pixel of the globe,
+// against the exact normal of the globe's relief (the functions its maps
+// were made from), in degrees, and the time per pixel; and how the error
+// falls with the tangent-space map's resolution. Writes 07_normals.csv and
+// 07_map_size.csv.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "03_zbuffer/hidden_surfaces.hpp"
+#include "globe_relief.hpp"
+#include "rasterlab/lab.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "rasterlab/results_table.hpp"
+#include "scene.hpp"
+
+namespace {
+
+using namespace normal_mapping;
+
+// One way to get the normal: a map and, for tangent space, a tangent method.
+struct Method {
+    std::string name;
+    NormalMap source;
+    TangentMethod tangents;
+};
+
+struct Globe {
+    MappedModel model;
+    perspective::Camera camera;
+    int size;
+    shading::Uniforms uniforms;
+};
+
+// The shader's normal at every pixel it draws (NaN elsewhere).
+struct NormalProbe {
+    NormalMappedShader shader;
+    rl::Grid<rl::vec3>* normals;
+    using Varyings = NormalMappedShader::Varyings;
+    perspective::ClipVertex<Varyings> vertex(const shading::VertexInput& in) const {
+        return shader.vertex(in);
+    }
+    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+        normals->at(f.x, f.y) = shader.normal_at(f);
+        return {};
+    }
+};
+
+rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl::vec4>& tangents,
+                         NormalMap source) {
+    rl::Grid<rl::vec3> normals(g.size, g.size, rl::vec3{NAN, NAN, NAN});
+    zbuffer::Frame frame(g.size, g.size);
+    const NormalProbe p{{g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents},
+                        &normals};
+    shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, p, frame.target(),
+                  {});
+    return normals;
+}
+
+// The exact normal at each pixel: the ray meets the sphere of radius 0.9,
+// whose (u, v) give the relief's normal.
+rl::Grid<rl::vec3> exact_normals(const Globe& g) {
+    rl::Grid<rl::vec3> out(g.size, g.size, rl::vec3{NAN, NAN, NAN});
+    const rl::dvec3 eye = rl::cast<double>(g.camera.eye);
+    const rl::dvec3 forward = rl::normalize(rl::cast<double>(g.camera.target) - eye);
+    const rl::dvec3 right = rl::normalize(rl::cross(forward, rl::cast<double>(g.camera.up)));
+    const rl::dvec3 up = rl::cross(right, forward);
+    const double tan_y = std::tan(g.camera.fov_y * std::numbers::pi / 360.0);
+    const double r = assets::kGlobeRadius;
+    for (int y = 0; y < g.size; ++y)
+        for (int x = 0; x < g.size; ++x) {
+            const double nx = (x + 0.5) / g.size * 2 - 1, ny = (y + 0.5) / g.size * 2 - 1;
+            const rl::dvec3 d = rl::normalize(forward + right * (nx * tan_y) + up * (ny * tan_y));
+            const double b = rl::dot(eye, d), c = rl::dot(eye, eye) - r * r, disc = b * b - c;
+            if (disc < 0) continue;
+            const rl::dvec3 p = (eye + d * (-b - std::sqrt(disc))) / r;  // on the unit sphere
+            const double u = std::atan2(p.x, p.z) / (2 * std::numbers::pi) + 0.5;
+            const double v = std::asin(std::clamp(p.y, -1.0, 1.0)) / std::numbers::pi + 0.5;
+            out.at(x, y) = rl::cast<float>(assets::globe_normal(u, v));
+        }
+    return out;
+}
+
+struct AngleError {
+    double mean = 0, p99 = 0;
+};
+
+AngleError compare(const rl::Grid<rl::vec3>& truth, const rl::Grid<rl::vec3>& got) {
+    std::vector<double> angles;
+    for (int y = 0; y < truth.height(); ++y)
+        for (int x = 0; x < truth.width(); ++x) {
+            const rl::vec3 a = truth.get(x, y), b = got.get(x, y);
+            if (std::isnan(a.x) || std::isnan(b.x)) continue;
+            const double c =
+                std::clamp(double(rl::dot(rl::normalize(a), rl::normalize(b))), -1.0, 1.0);
+            angles.push_back(std::acos(c) * 180 / std::numbers::pi);
+        }
+    AngleError e;
+    if (angles.empty()) return e;
+    for (double a : angles) e.mean += a;
+    e.mean /= static_cast<double>(angles.size());
+    std::sort(angles.begin(), angles.end());
+    e.p99 = angles[angles.size() * 99 / 100];
+    return e;
+}
+
+struct Timed {
+    const Globe* globe;
+    const Maps* maps;
+    const std::vector<rl::vec4>* tangents;
+    NormalMap source;
+};
+
+void render_globe(benchmark::State& state, const Timed* t) {
+    for (auto _ : state) {
+        zbuffer::Frame frame(t->globe->size, t->globe->size);
+        const NormalMappedShader shader{
+            t->globe->uniforms, *t->maps, t->source, shading::Specular::blinn_phong, 1.0f,
+            t->tangents};
+        shading::draw(shading::Surface{t->globe->model.lit.model.mesh, t->globe->model.lit.normals},
+                      shader, frame.target(), {});
+        benchmark::DoNotOptimize(frame.colour.get(0, 0));
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const rl::lab::Options options = rl::lab::init(
+        argc, argv, "Lesson 07 lab: normal-map methods against the globe's exact normals.");
+    return rl::guarded_main("07_normal_mapping_lab", [&] {
+        std::vector<std::string> warnings;
+        Globe g{load_mapped_model(rl::project_model("globe"), rl::mat4::identity(),
+                                  TangentMethod::split, warnings),
+                {},
+                options.quick ? 96 : 512,
+                {}};
+        g.camera.eye = {0.9f, 0.7f, 2.2f};  // the globe's u = 0.5 faces +z; the seam is behind
+        g.camera.target = {0, 0, 0};
+        g.camera.fov_y = 50;
+        g.camera.near = 0.5f;
+        g.camera.far = 10;
+        g.uniforms = shading::Uniforms{rl::mat4::identity(),
+                                       rl::mat3::identity(),
+                                       perspective::view_projection(g.camera, 1.0f),
+                                       g.camera.eye,
+                                       shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f}),
+                                       &g.model.lit.model.texture,
+                                       {},
+                                       {}};
+        const rl::Mesh& mesh = g.model.lit.model.mesh;
+        std::vector<std::vector<rl::vec4>> frames;
+        for (TangentMethod m : kTangentMethods)
+            frames.push_back(corner_tangents(mesh, g.model.lit.normals, m));
+        const std::vector<Method> methods = {
+            {"no map (smooth normals)", NormalMap::none, TangentMethod::split},
+            {"tangent map, per-face frames", NormalMap::tangent, TangentMethod::face},
+            {"tangent map, per-vertex frames", NormalMap::tangent, TangentMethod::vertex},
+            {"tangent map, per-vertex split frames", NormalMap::tangent, TangentMethod::split},
+            {"object-space map", NormalMap::object, TangentMethod::split}};
+        std::vector<Timed> timed;
+        for (const Method& m : methods)
+            timed.push_back(
+                {&g, &g.model.maps, &frames[static_cast<std::size_t>(m.tangents)], m.source});
+        for (std::size_t i = 0; i < methods.size(); ++i)
+            benchmark::RegisterBenchmark(("globe/" + methods[i].name).c_str(), render_globe,
+                                         &timed[i])
+                ->Unit(benchmark::kMicrosecond);
+        const auto timings = rl::lab::run_benchmarks();
+
+        const rl::Grid<rl::vec3> truth = exact_normals(g);
+        long covered = 0;
+        for (const rl::vec3& n : truth.pixels()) covered += !std::isnan(n.x);
+        rl::ResultsTable table(
+            {"method", "ns_per_pixel", "mean_error_degrees", "p99_error_degrees"});
+        for (std::size_t i = 0; i < methods.size(); ++i) {
+            const AngleError e =
+                compare(truth, probe(g, g.model.maps, *timed[i].tangents, methods[i].source));
+            table.add_row({methods[i].name,
+                           timings.at("globe/" + methods[i].name).median_ns /
+                               static_cast<double>(std::max(covered, 1L)),
+                           e.mean, e.p99});
+        }
+
+        // The map's resolution: the tangent-space map from smaller copies.
+        rl::ResultsTable sizes({"map_size", "method", "mean_error_degrees", "p99_error_degrees"});
+        const textures::MipChain& full = *g.model.maps.tangent_normals;
+        for (int level = 0; level < full.levels() && full.level(level).height() >= 8; ++level) {
+            Maps smaller;
+            smaller.tangent_normals = textures::MipChain(full.level(level));
+            const AngleError e = compare(
+                truth, probe(g, smaller, frames[static_cast<std::size_t>(TangentMethod::split)],
+                             NormalMap::tangent));
+            sizes.add_row({static_cast<long long>(full.level(level).width()),
+                           std::string("tangent map, split frames"), e.mean, e.p99});
+        }
+        table.write_csv(options.out_dir / "07_normals.csv");
+        sizes.write_csv(options.out_dir / "07_map_size.csv");
+        std::printf("%s\n%s", table.to_csv().c_str(), sizes.to_csv().c_str());
+        return 0;
+    });
+}

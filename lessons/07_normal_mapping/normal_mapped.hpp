@@ -1,0 +1,111 @@
+// The full render of this series: lesson 06's Blinn-Phong (or Phong) shading
+// in linear light, with the normal at each pixel from a normal map, in
+// tangent space (through the corner tangent frames) or in object space, and
+// the highlight's strength from a specular map.
+//
+//   const normal_mapping::Maps maps = normal_mapping::load_maps(mesh, warnings);
+//   shading::draw(surface, normal_mapping::NormalMappedShader{u, maps, kind, ...}, target, {});
+#pragma once
+
+#include <optional>
+
+#include "06_shading/shaders.hpp"
+#include "tangents.hpp"
+
+namespace normal_mapping {
+
+// Where the normal at a pixel comes from.
+enum class NormalMap { tangent, object, none };
+inline constexpr std::array<rl::Named<NormalMap>, 3> kNormalMapNames = {
+    {{NormalMap::tangent, "tangent"}, {NormalMap::object, "object"}, {NormalMap::none, "none"}}};
+inline constexpr std::array<NormalMap, 3> kNormalMaps = rl::values_of(kNormalMapNames);
+inline const char* name(NormalMap value) {
+    return rl::name_in(kNormalMapNames, value);
+}
+
+// A model's maps; each empty where the model has none. Normal and specular
+// maps hold data, not colours: their bytes are read as they are, not sRGB.
+struct Maps {
+    std::optional<textures::MipChain> tangent_normals, object_normals, specular;
+};
+
+// Finds `<name>_nm_tangent`, `_nm`, `_spec` (or the MTL's maps) beside the
+// OBJ. A missing map is silent (most models have few); an unreadable one warns.
+Maps load_maps(const rl::Mesh& mesh, std::vector<std::string>& warnings);
+
+// A tangent-space texel (r, g, b) as a direction: 2 * rgb - 1, the OpenGL
+// convention (green along +v).
+inline rl::vec3 decode_normal(rl::vec4 texel) {
+    return {2 * texel.x - 1, 2 * texel.y - 1, 2 * texel.z - 1};
+}
+
+// [doc:normal-mapped-shader]
+struct NormalMappedShader {
+    const shading::Uniforms& u;
+    const Maps& maps;
+    NormalMap source;
+    shading::Specular specular;
+    float mirror;  // -1 when the model matrix mirrors: the bitangent flips with it
+    struct Varyings {
+        rl::vec3 position, normal, tangent;  // world space
+        float handedness;
+        rl::vec2 uv;
+        friend Varyings operator+(const Varyings& a, const Varyings& b) {
+            return {a.position + b.position, a.normal + b.normal, a.tangent + b.tangent,
+                    a.handedness + b.handedness, a.uv + b.uv};
+        }
+        friend Varyings operator*(const Varyings& a, float s) {
+            return {a.position * s, a.normal * s, a.tangent * s, a.handedness * s, a.uv * s};
+        }
+    };
+    // The vertex stage reads the corner's tangent from here (3 per face).
+    const std::vector<rl::vec4>* tangents = nullptr;
+
+    perspective::ClipVertex<Varyings> vertex(const shading::VertexInput& in) const {
+        const rl::vec4 t = (*tangents)[3 * static_cast<std::size_t>(in.face) +
+                                       static_cast<std::size_t>(in.corner)];
+        // A tangent is a direction along the surface: it transforms like a
+        // position difference (by the model's 3x3), not like a normal.
+        const rl::vec3 world_tangent = (u.model * rl::vec4{t.x, t.y, t.z, 0}).xyz();
+        return {
+            u.clip(in.position),
+            {u.world(in.position), u.world_normal(in.normal), world_tangent, t.w * mirror, in.uv}};
+    }
+
+    // The unit normal at a pixel, in world space: from the map chosen, or
+    // the interpolated one.
+    rl::vec3 normal_at(const perspective::Fragment<Varyings>& f) const {
+        const Varyings& v = f.varyings;
+        const rl::vec2 dx = f.d_dx().uv, dy = f.d_dy().uv;
+        rl::vec3 n = rl::normalize(v.normal);
+        if (source == NormalMap::tangent && maps.tangent_normals) {
+            // Re-orthogonalise the interpolated frame, then B from N, T and w.
+            const rl::vec3 t = rl::normalize(v.tangent - n * rl::dot(n, v.tangent));
+            const rl::vec3 b = rl::cross(n, t) * (v.handedness < 0 ? -1.0f : 1.0f);
+            const rl::vec3 m = decode_normal(sample(*maps.tangent_normals, v.uv, dx, dy));
+            n = rl::normalize(t * m.x + b * m.y + n * m.z);
+        } else if (source == NormalMap::object && maps.object_normals) {
+            n = u.world_normal(decode_normal(sample(*maps.object_normals, v.uv, dx, dy)));
+        }
+        return n;
+    }
+
+    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+        const Varyings& v = f.varyings;
+        const rl::vec2 dx = f.d_dx().uv, dy = f.d_dy().uv;
+        const rl::vec3 n = normal_at(f);
+        const shading::Reflection<float> r =
+            shading::reflection(u.lighting, n, rl::normalize(u.eye - v.position), specular);
+        const float shine = maps.specular ? sample(*maps.specular, v.uv, dx, dy).x : 1.0f;
+        return u.albedo(v.uv, dx, dy) * r.diffuse + r.specular * shine;
+    }
+
+    rl::vec4 sample(const textures::MipChain& map, rl::vec2 uv, rl::vec2 dx, rl::vec2 dy) const {
+        textures::SamplerState data;  // bytes as they are: these maps hold data
+        data.filter = textures::Filter::trilinear;
+        return textures::sample(map, uv, {dx, dy}, data);
+    }
+};
+// [/doc:normal-mapped-shader]
+
+}  // namespace normal_mapping

@@ -1,0 +1,37 @@
+// Lesson 07's scene: lesson 06's lit models with their tangent frames and
+// maps, and the render of all of it.
+//
+//   auto models = normal_mapping::default_scene(TangentMethod::split, warnings);
+//   normal_mapping::render(models, camera, options, frame);
+#pragma once
+
+#include "06_shading/scene.hpp"
+#include "normal_mapped.hpp"
+
+namespace normal_mapping {
+
+struct MappedModel {
+    shading::LitModel lit;
+    std::vector<rl::vec4> tangents;  // 3 per face
+    Maps maps;
+};
+
+MappedModel load_mapped_model(const std::filesystem::path& path, const rl::mat4& transform,
+                              TangentMethod method, std::vector<std::string>& warnings);
+
+// The default: the globe (diffuse, tangent- and object-space normal maps,
+// specular map) and the crate (mirrored UVs on two faces) on the floor.
+std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings);
+
+struct RenderOptions {
+    perspective::PipelineOptions pipeline;
+    NormalMap normal_map = NormalMap::tangent;
+    shading::Specular specular = shading::Specular::blinn_phong;
+    shading::Lighting<float> lighting = shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f});
+};
+
+perspective::PipelineCounts render(const std::vector<MappedModel>& models,
+                                   const perspective::Camera& camera, const RenderOptions& options,
+                                   zbuffer::Frame& frame);
+
+}  // namespace normal_mapping

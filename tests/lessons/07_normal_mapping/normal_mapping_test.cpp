@@ -1,0 +1,135 @@
+// Lesson 07's stability cases and pitfalls: the globe's two normal maps
+// agree under the OpenGL convention (and not with green flipped), mirrored
+// UVs give left-handed frames, zero-area UV triangles and poles get finite
+// frames, a model without UVs ignores its maps with a warning.
+// docs/07_normal_mapping.md links each.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include "07_normal_mapping/scene.hpp"
+
+namespace {
+
+using namespace normal_mapping;
+
+// Mean angle (degrees) between the object-space map and the tangent-space
+// map turned into object space through the corner frames, at each face's
+// centre; `flip_green` reads the tangent map with the DirectX convention.
+double maps_disagree(TangentMethod method, bool flip_green) {
+    std::vector<std::string> warnings;
+    const MappedModel globe =
+        load_mapped_model(rl::project_model("globe"), rl::mat4::identity(), method, warnings);
+    const rl::Mesh& mesh = globe.lit.model.mesh;
+    const std::vector<rl::vec4>& t = globe.tangents;
+    textures::SamplerState sampler;  // bilinear, bytes as they are
+    double sum = 0;
+    int count = 0;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        rl::vec3 n{}, tangent{};
+        rl::vec2 uv{};
+        float w = 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            n += globe.lit.normals[3 * f + k] * (1.0f / 3);
+            tangent += t[3 * f + k].xyz() * (1.0f / 3);
+            w += t[3 * f + k].w / 3;
+            uv += mesh.uvs[static_cast<std::size_t>(mesh.faces[f].corners[k].uv)] * (1.0f / 3);
+        }
+        n = rl::normalize(n);
+        tangent = rl::normalize(tangent - n * rl::dot(n, tangent));
+        const rl::vec3 b = rl::cross(n, tangent) * (w < 0 ? -1.0f : 1.0f);
+        rl::vec3 m = decode_normal(textures::sample(*globe.maps.tangent_normals, uv, {}, sampler));
+        if (flip_green) m.y = -m.y;
+        const rl::vec3 from_tangent = rl::normalize(tangent * m.x + b * m.y + n * m.z);
+        const rl::vec3 from_object = rl::normalize(
+            decode_normal(textures::sample(*globe.maps.object_normals, uv, {}, sampler)));
+        sum += std::acos(std::clamp(double(rl::dot(from_tangent, from_object)), -1.0, 1.0)) * 180 /
+               3.14159265358979;
+        ++count;
+    }
+    return sum / count;
+}
+
+TEST(NormalMappingTest, TheGlobesTwoMapsAgreeUnderTheOpenGlConvention) {
+    EXPECT_LT(maps_disagree(TangentMethod::split, false), 0.5);
+    EXPECT_GT(maps_disagree(TangentMethod::split, true), 1.0);  // DirectX's green: they disagree
+}
+
+TEST(NormalMappingTest, MirroredUvsGetLeftHandedFrames) {
+    // The crate's -x and -y faces have mirrored u: w = -1 there, +1 elsewhere.
+    std::vector<std::string> warnings;
+    const MappedModel crate = load_mapped_model(rl::project_model("crate"), rl::mat4::identity(),
+                                                TangentMethod::split, warnings);
+    const rl::Mesh& mesh = crate.lit.model.mesh;
+    int left = 0, right = 0;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const FaceFrame frame = face_frame(mesh, mesh.faces[f]);
+        ASSERT_TRUE(frame.valid);
+        const rl::vec3 n = crate.lit.normals[3 * f];
+        const bool mirrored = rl::dot(rl::cross(frame.tangent, frame.bitangent), n) < 0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            const rl::vec4 t = crate.tangents[3 * f + k];
+            EXPECT_EQ(t.w < 0, mirrored) << "face " << f;
+            // B = w cross(N, T) points along +v, like the face's own bitangent.
+            EXPECT_GT(
+                rl::dot(rl::cross(crate.lit.normals[3 * f + k], t.xyz()) * t.w, frame.bitangent),
+                0.0f);
+        }
+        (mirrored ? left : right)++;
+    }
+    EXPECT_EQ(left, 4);  // two faces of two triangles each
+    EXPECT_EQ(right, 8);
+}
+
+void expect_orthonormal(const std::vector<rl::vec4>& t, const std::vector<rl::vec3>& n) {
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const rl::vec3 tangent = t[i].xyz();
+        ASSERT_TRUE(std::isfinite(tangent.x) && std::isfinite(tangent.y) &&
+                    std::isfinite(tangent.z));
+        EXPECT_NEAR(rl::length(tangent), 1.0f, 1e-4f) << i;
+        EXPECT_NEAR(rl::dot(tangent, n[i]), 0.0f, 1e-4f) << i;
+        EXPECT_TRUE(t[i].w == 1.0f || t[i].w == -1.0f);
+    }
+}
+
+TEST(NormalMappingTest, ZeroAreaUvTrianglesGetAFallbackFrame) {
+    const rl::Mesh mesh = rl::parse_obj(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n", "", "flat.obj");
+    EXPECT_FALSE(face_frame(mesh, mesh.faces[0]).valid);
+    const std::vector<rl::vec3> normals = shading::corner_normals(mesh, shading::Weighting::angle);
+    for (TangentMethod m : kTangentMethods)
+        expect_orthonormal(corner_tangents(mesh, normals, m), normals);
+}
+
+TEST(NormalMappingTest, SeamsAndPolesOfTheGlobeGetFiniteOrthonormalFrames) {
+    std::vector<std::string> warnings;
+    const rl::Mesh globe = rl::load_obj(rl::project_model("globe"), &warnings);
+    const std::vector<rl::vec3> normals = shading::corner_normals(globe, shading::Weighting::angle);
+    for (TangentMethod m : kTangentMethods)
+        expect_orthonormal(corner_tangents(globe, normals, m), normals);
+}
+
+TEST(NormalMappingTest, AModelWithoutUvsIgnoresItsMapsWithAWarning) {
+    const auto dir = std::filesystem::temp_directory_path() / "rasterlab_07_no_uvs";
+    std::filesystem::create_directories(dir);
+    {
+        std::ofstream obj(dir / "plain.obj");
+        obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    }
+    std::filesystem::copy_file(std::filesystem::path(RASTERLAB_OBJ_DIR) / "crate_nm_tangent.tga",
+                               dir / "plain_nm_tangent.tga",
+                               std::filesystem::copy_options::overwrite_existing);
+    std::vector<std::string> warnings;
+    const MappedModel m =
+        load_mapped_model(dir / "plain.obj", rl::mat4::identity(), TangentMethod::split, warnings);
+    EXPECT_FALSE(m.maps.tangent_normals.has_value());
+    bool warned = false;
+    for (const std::string& w : warnings)
+        warned |= w.find("no texture coordinates") != std::string::npos;
+    EXPECT_TRUE(warned);
+    std::filesystem::remove_all(dir);
+}
+
+}  // namespace
