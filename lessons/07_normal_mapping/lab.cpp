@@ -1,8 +1,10 @@
 // Lesson 07's lab: the normal each method puts at each pixel of the globe,
 // against the exact normal of the globe's relief (the functions its maps
 // were made from), in degrees, and the time per pixel; and how the error
-// falls with the tangent-space map's resolution. Writes 07_normals.csv and
-// 07_map_size.csv.
+// falls with the tangent-space map's resolution; and, on a plane whose UVs
+// are mirrored down its middle (each face's own frame is exact there), what
+// averaging frames across the mirror line costs. Writes 07_normals.csv,
+// 07_map_size.csv and 07_mirrored.csv.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -84,7 +86,7 @@ rl::Grid<rl::vec3> exact_normals(const Globe& g) {
 }
 
 struct AngleError {
-    double mean = 0, p99 = 0;
+    double mean = 0, p99 = 0, max = 0;
 };
 
 AngleError compare(const rl::Grid<rl::vec3>& truth, const rl::Grid<rl::vec3>& got) {
@@ -103,6 +105,7 @@ AngleError compare(const rl::Grid<rl::vec3>& truth, const rl::Grid<rl::vec3>& go
     e.mean /= static_cast<double>(angles.size());
     std::sort(angles.begin(), angles.end());
     e.p99 = angles[angles.size() * 99 / 100];
+    e.max = angles.back();
     return e;
 }
 
@@ -112,6 +115,12 @@ struct Timed {
     const std::vector<rl::vec4>* tangents;
     NormalMap source;
 };
+
+// The tangent frames of the globe's corners (the one-off cost, on loading).
+void build_tangents(benchmark::State& state, const shading::LitModel* lit, TangentMethod m) {
+    for (auto _ : state)
+        benchmark::DoNotOptimize(corner_tangents(lit->model.mesh, lit->normals, m).data());
+}
 
 void render_globe(benchmark::State& state, const Timed* t) {
     for (auto _ : state) {
@@ -168,6 +177,10 @@ int main(int argc, char** argv) {
             benchmark::RegisterBenchmark(("globe/" + methods[i].name).c_str(), render_globe,
                                          &timed[i])
                 ->Unit(benchmark::kMicrosecond);
+        for (TangentMethod m : kTangentMethods)
+            benchmark::RegisterBenchmark((std::string("tangents/") + name(m)).c_str(),
+                                         build_tangents, &g.model.lit, m)
+                ->Unit(benchmark::kMicrosecond);
         const auto timings = rl::lab::run_benchmarks();
 
         const rl::Grid<rl::vec3> truth = exact_normals(g);
@@ -196,9 +209,67 @@ int main(int argc, char** argv) {
             sizes.add_row({static_cast<long long>(full.level(level).width()),
                            std::string("tangent map, split frames"), e.mean, e.p99});
         }
+        // A mirrored plane: the square [-1, 1]^2 in 8 x 8 cells whose u runs
+        // |x| (mirrored at x = 0, as symmetric models are painted), positions
+        // shared along the mirror line. Its faces are planar with affine UVs,
+        // so each face's own frame is exact; against those frames:
+        MappedModel plane = load_mapped_model(rl::project_model("crate"), rl::mat4::identity(),
+                                              TangentMethod::face, warnings);
+        {
+            rl::Mesh& square = plane.lit.model.mesh;
+            square.positions.clear();
+            square.uvs.clear();
+            square.normals = {{0, 0, 1}};
+            square.faces.clear();
+            const int n = 8;
+            for (int j = 0; j <= n; ++j)
+                for (int i = 0; i <= n; ++i) {
+                    const float x = -1 + 2.0f * i / n, y = -1 + 2.0f * j / n;
+                    square.positions.push_back({x, y, 0});
+                    square.uvs.push_back({std::abs(x), (y + 1) / 2});
+                }
+            const auto corner = [&](int i, int j) {
+                return rl::Corner{j * (n + 1) + i, j * (n + 1) + i, 0};
+            };
+            for (int j = 0; j < n; ++j)
+                for (int i = 0; i < n; ++i) {
+                    square.faces.push_back(
+                        {{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1)}, 0});
+                    square.faces.push_back(
+                        {{corner(i, j), corner(i + 1, j + 1), corner(i, j + 1)}, 0});
+                }
+            plane.lit.normals = shading::corner_normals(square, shading::Weighting::angle);
+            plane.lit.model.box = perspective::bounds(square, rl::mat4::identity());
+        }
+        Globe crate{std::move(plane), {}, g.size, {}};
+        crate.camera = g.camera;
+        crate.camera.eye = {0.3f, -0.4f, 2.4f};
+        crate.uniforms = g.uniforms;
+        crate.uniforms.model_view_projection = perspective::view_projection(crate.camera, 1.0f);
+        crate.uniforms.eye = crate.camera.eye;
+        crate.uniforms.texture = &crate.model.lit.model.texture;
+        const rl::Mesh& box = crate.model.lit.model.mesh;
+        std::vector<std::vector<rl::vec4>> crate_frames;
+        for (TangentMethod m : kTangentMethods)
+            crate_frames.push_back(corner_tangents(box, crate.model.lit.normals, m));
+        const rl::Grid<rl::vec3> exact_frames =
+            probe(crate, crate.model.maps, crate_frames[0], NormalMap::tangent);
+        rl::ResultsTable crate_table({"method", "ns_per_corner", "mean_error_degrees",
+                                      "p99_error_degrees", "max_error_degrees"});
+        for (TangentMethod m : kTangentMethods) {
+            const AngleError e = compare(
+                exact_frames, probe(crate, crate.model.maps,
+                                    crate_frames[static_cast<std::size_t>(m)], NormalMap::tangent));
+            crate_table.add_row({std::string(name(m)),
+                                 timings.at(std::string("tangents/") + name(m)).median_ns /
+                                     static_cast<double>(3 * mesh.faces.size()),
+                                 e.mean, e.p99, e.max});
+        }
+        crate_table.write_csv(options.out_dir / "07_mirrored.csv");
         table.write_csv(options.out_dir / "07_normals.csv");
         sizes.write_csv(options.out_dir / "07_map_size.csv");
-        std::printf("%s\n%s", table.to_csv().c_str(), sizes.to_csv().c_str());
+        std::printf("%s\n%s\n%s", table.to_csv().c_str(), sizes.to_csv().c_str(),
+                    crate_table.to_csv().c_str());
         return 0;
     });
 }
