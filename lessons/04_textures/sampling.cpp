@@ -67,6 +67,7 @@ MipChain::MipChain(const rl::Image& image, const TexelEncoding* encoding) {
 
 // [doc:wrap]
 int wrap_texel(int i, int size, Wrap wrap) {
+    if (i >= 0 && i < size) return i;  // inside: every mode agrees (and no division)
     switch (wrap) {
         case Wrap::repeat:
             return ((i % size) + size) % size;
@@ -85,14 +86,18 @@ int wrap_texel(int i, int size, Wrap wrap) {
 
 namespace {
 
-rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) {
-    const int x = wrap_texel(i, level.width(), state.wrap),
-              y = wrap_texel(j, level.height(), state.wrap);
+// The texel at wrapped indices (x, y); -1 in either: the border colour.
+rl::vec4 fetch(const rl::Image& level, int x, int y, const SamplerState& state) {
     if (x < 0 || y < 0) return state.border;
     const rl::Rgba c = level.get(x, y);
     if (!state.encoding) return to_vec4(c);
     const std::array<float, 256>& value = state.encoding->value;
     return {value[c.r], value[c.g], value[c.b], float(c.a) / 255.0f};
+}
+
+rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) {
+    return fetch(level, wrap_texel(i, level.width(), state.wrap),
+                 wrap_texel(j, level.height(), state.wrap), state);
 }
 
 // Texel coordinates are computed in double after reducing u to one period:
@@ -125,10 +130,13 @@ rl::vec4 sample_level(const rl::Image& level, rl::vec2 uv, bool bilinear,
     const double x = s - 0.5, y = t - 0.5;
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
     const float fx = static_cast<float>(x - i), fy = static_cast<float>(y - j);
+    const int x0 = wrap_texel(i, level.width(), state.wrap),
+              x1 = wrap_texel(i + 1, level.width(), state.wrap);
+    const int y0 = wrap_texel(j, level.height(), state.wrap),
+              y1 = wrap_texel(j + 1, level.height(), state.wrap);
     const rl::vec4 bottom =
-        texel(level, i, j, state) * (1 - fx) + texel(level, i + 1, j, state) * fx;
-    const rl::vec4 top =
-        texel(level, i, j + 1, state) * (1 - fx) + texel(level, i + 1, j + 1, state) * fx;
+        fetch(level, x0, y0, state) * (1 - fx) + fetch(level, x1, y0, state) * fx;
+    const rl::vec4 top = fetch(level, x0, y1, state) * (1 - fx) + fetch(level, x1, y1, state) * fx;
     return bottom * (1 - fy) + top * fy;
 }
 // [/doc:sample-level]

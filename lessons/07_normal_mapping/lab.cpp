@@ -16,7 +16,9 @@
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
+#include "rasterlab/texture_files.hpp"
 #include "scene.hpp"
+#include "tinyrenderer_style.hpp"
 
 namespace {
 
@@ -45,7 +47,7 @@ struct NormalProbe {
         return shader.vertex(in);
     }
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
-        normals->at(f.x, f.y) = shader.normal_at(f);
+        normals->at(f.x, f.y) = shader.normal_at(f, f.d_dx().uv, f.d_dy().uv);
         return {};
     }
 };
@@ -116,6 +118,35 @@ struct Timed {
     NormalMap source;
 };
 
+// One frame of the globe at the program's size, by this lesson's pipeline
+// (split frames, trilinear maps, linear light) or tinyrenderer's way.
+struct SpeedScene {
+    const Globe* globe;
+    rl::Image diffuse, normal_map;
+};
+
+void frame_ours(benchmark::State& state, const SpeedScene* s) {
+    const Globe& g = *s->globe;
+    for (auto _ : state) {
+        zbuffer::Frame frame(g.size, g.size);
+        const NormalMappedShader shader{
+            g.uniforms, g.model.maps,     NormalMap::tangent, shading::Specular::phong,
+            1.0f,       &g.model.tangents};
+        shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, shader,
+                      frame.target(), {});
+        benchmark::DoNotOptimize(frame.colour.get(0, 0));
+    }
+}
+
+void frame_tinyrenderer(benchmark::State& state, const SpeedScene* s) {
+    const Globe& g = *s->globe;
+    const tinyrenderer_style::Textures t{&s->diffuse, &s->normal_map};
+    for (auto _ : state)
+        benchmark::DoNotOptimize(tinyrenderer_style::render(g.model.lit.model.mesh, t, g.camera,
+                                                            {0.3f, 0.5f, 1.0f}, g.size, g.size)
+                                     .get(0, 0));
+}
+
 // The tangent frames of the globe's corners (the one-off cost, on loading).
 void build_tangents(benchmark::State& state, const shading::LitModel* lit, TangentMethod m) {
     for (auto _ : state)
@@ -177,6 +208,21 @@ int main(int argc, char** argv) {
             benchmark::RegisterBenchmark(("globe/" + methods[i].name).c_str(), render_globe,
                                          &timed[i])
                 ->Unit(benchmark::kMicrosecond);
+        // Speed against a tinyrenderer-style renderer, at the program's 800 x 800.
+        Globe big = g;
+        big.size = options.quick ? 128 : 800;
+        SpeedScene speed{&big, {}, {}};
+        {
+            const rl::Mesh& globe_mesh = g.model.lit.model.mesh;
+            speed.diffuse =
+                rl::load_texture(globe_mesh, 0, rl::TextureRole::diffuse, warnings).image;
+            speed.normal_map =
+                rl::load_texture(globe_mesh, 0, rl::TextureRole::normal_tangent, warnings).image;
+        }
+        benchmark::RegisterBenchmark("frame/this lesson", frame_ours, &speed)
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark("frame/tinyrenderer-style", frame_tinyrenderer, &speed)
+            ->Unit(benchmark::kMillisecond);
         for (TangentMethod m : kTangentMethods)
             benchmark::RegisterBenchmark((std::string("tangents/") + name(m)).c_str(),
                                          build_tangents, &g.model.lit, m)
@@ -266,10 +312,30 @@ int main(int argc, char** argv) {
                                  e.mean, e.p99, e.max});
         }
         crate_table.write_csv(options.out_dir / "07_mirrored.csv");
+        // Both renderers' normals against the exact ones, at 800 x 800.
+        rl::ResultsTable speed_table(
+            {"renderer", "ms_per_frame", "mean_error_degrees", "p99_error_degrees"});
+        {
+            const rl::Grid<rl::vec3> big_truth = exact_normals(big);
+            const AngleError ours = compare(
+                big_truth, probe(big, big.model.maps, big.model.tangents, NormalMap::tangent));
+            rl::Grid<rl::vec3> theirs(big.size, big.size, rl::vec3{NAN, NAN, NAN});
+            tinyrenderer_style::render(big.model.lit.model.mesh,
+                                       {&speed.diffuse, &speed.normal_map}, big.camera,
+                                       {0.3f, 0.5f, 1.0f}, big.size, big.size, &theirs);
+            const AngleError tr = compare(big_truth, theirs);
+            speed_table.add_row({std::string("this lesson (split frames, trilinear, linear light)"),
+                                 timings.at("frame/this lesson").median_ns / 1e6, ours.mean,
+                                 ours.p99});
+            speed_table.add_row({std::string("tinyrenderer-style (per-pixel frame, nearest texel)"),
+                                 timings.at("frame/tinyrenderer-style").median_ns / 1e6, tr.mean,
+                                 tr.p99});
+        }
+        speed_table.write_csv(options.out_dir / "07_speed.csv");
         table.write_csv(options.out_dir / "07_normals.csv");
         sizes.write_csv(options.out_dir / "07_map_size.csv");
-        std::printf("%s\n%s\n%s", table.to_csv().c_str(), sizes.to_csv().c_str(),
-                    crate_table.to_csv().c_str());
+        std::printf("%s\n%s\n%s\n%s", table.to_csv().c_str(), sizes.to_csv().c_str(),
+                    crate_table.to_csv().c_str(), speed_table.to_csv().c_str());
         return 0;
     });
 }

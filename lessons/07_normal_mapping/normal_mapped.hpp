@@ -7,6 +7,7 @@
 //   shading::draw(surface, normal_mapping::NormalMappedShader{u, maps, kind, ...}, target, {});
 #pragma once
 
+#include <algorithm>
 #include <optional>
 
 #include "06_shading/shaders.hpp"
@@ -74,9 +75,9 @@ struct NormalMappedShader {
 
     // The unit normal at a pixel, in world space: from the map chosen, or
     // the interpolated one.
-    rl::vec3 normal_at(const perspective::Fragment<Varyings>& f) const {
+    // (dx, dy: the texture coordinates' screen derivatives, for the mip level.)
+    rl::vec3 normal_at(const perspective::Fragment<Varyings>& f, rl::vec2 dx, rl::vec2 dy) const {
         const Varyings& v = f.varyings;
-        const rl::vec2 dx = f.d_dx().uv, dy = f.d_dy().uv;
         rl::vec3 n = rl::normalize(v.normal);
         if (source == NormalMap::tangent && maps.tangent_normals) {
             // Re-orthogonalise the interpolated frame, then B from N, T and w.
@@ -93,10 +94,15 @@ struct NormalMappedShader {
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx().uv, dy = f.d_dy().uv;
-        const rl::vec3 n = normal_at(f);
+        const rl::vec3 n = normal_at(f, dx, dy);
         const shading::Reflection<float> r =
             shading::reflection(u.lighting, n, rl::normalize(u.eye - v.position), specular);
-        const float shine = maps.specular ? sample(*maps.specular, v.uv, dx, dy).x : 1.0f;
+        // The specular map scales the highlight; where the highlight is too
+        // dim to change any byte (under 10^-4 of the light), skip the lookup.
+        const float peak = std::max({r.specular.x, r.specular.y, r.specular.z});
+        const float shine = !maps.specular ? 1.0f
+                            : peak < 1e-4f ? 0.0f
+                                           : sample(*maps.specular, v.uv, dx, dy).x;
         return u.albedo(v.uv, dx, dy) * r.diffuse + r.specular * shine;
     }
 
