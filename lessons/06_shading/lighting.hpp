@@ -13,6 +13,7 @@
 #include <cmath>
 #include <vector>
 
+#include "rasterlab/named_enum.hpp"
 #include "rasterlab/vec.hpp"
 
 namespace shading {
@@ -36,6 +37,12 @@ struct Lighting {
 };
 
 enum class Specular { phong, blinn_phong };
+inline constexpr std::array<rl::Named<Specular>, 2> kSpecularNames = {
+    {{Specular::phong, "phong"}, {Specular::blinn_phong, "blinn-phong"}}};
+inline constexpr std::array<Specular, 2> kSpeculars = rl::values_of(kSpecularNames);
+inline const char* name(Specular value) {
+    return rl::name_in(kSpecularNames, value);
+}
 
 // [doc:reflected]
 // The light a surface point sends towards the eye, per unit of light

@@ -23,8 +23,8 @@ int main(int argc, char** argv) {
                           "Normal map to use");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
                           "Tangent frames");
-    bool phong = false;
-    app.add_flag("--phong", phong, "Phong's highlight instead of Blinn's");
+    rl::add_method_option(app, "--shading", options.specular, shading::kSpeculars,
+                          "Shading model (per pixel; the highlight Phong's or Blinn's)");
     CLI11_PARSE(app, argc, argv);
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
@@ -32,7 +32,6 @@ int main(int argc, char** argv) {
     return rl::guarded_main("07_normal_mapping", [&] {
         rl::check_image_output(output);
         options.lighting = shading::default_lighting(perspective::light_direction(view));
-        options.specular = phong ? shading::Specular::phong : shading::Specular::blinn_phong;
         std::vector<std::string> warnings;
         std::vector<normal_mapping::MappedModel> models;
         if (view.models.empty()) models = normal_mapping::default_scene(tangents, warnings);

@@ -75,7 +75,8 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
         return out;
     }
     // Per vertex: each position holds one or more slots, each summing the
-    // unit T and B of its faces weighted by the face's angle at the vertex.
+    // unit T and B of its faces weighted by the face's area times its angle
+    // at the vertex.
     // `split` opens a new slot for a face whose UVs run the other way
     // (opposite handedness) or turn away (T + B against the slot's).
     struct Slot {
@@ -87,9 +88,10 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         if (!frames[f].valid) continue;
         const rl::Face& face = mesh.faces[f];
-        const rl::vec3 n =
-            rl::normalize(rl::cross(mesh.position(face, 1) - mesh.position(face, 0),
-                                    mesh.position(face, 2) - mesh.position(face, 0)));
+        const rl::vec3 twice_area = rl::cross(mesh.position(face, 1) - mesh.position(face, 0),
+                                              mesh.position(face, 2) - mesh.position(face, 0));
+        const rl::vec3 n = rl::normalize(twice_area);
+        const float area = rl::length(twice_area) / 2;
         const rl::vec3 t = rl::normalize(frames[f].tangent), b = rl::normalize(frames[f].bitangent);
         const bool right_handed = rl::dot(rl::cross(t, b), n) > 0;
         for (int k = 0; k < 3; ++k) {
@@ -104,7 +106,8 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
                         break;
                 }
             if (s == here.size()) here.push_back({{}, {}, right_handed});
-            const float weight = corner_angle(mesh, face, k);
+            // The seed notes' weight: the face's area times its angle here.
+            const float weight = corner_angle(mesh, face, k) * area;
             here[s].tangent += t * weight;
             here[s].bitangent += b * weight;
             slot_of[3 * f + static_cast<std::size_t>(k)] = s;

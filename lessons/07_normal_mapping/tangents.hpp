@@ -3,7 +3,8 @@
 // so that a tangent-space normal map's (r, g, b) = (T, B, N) components can
 // be turned into a direction. Three ways, compared in the lab:
 //   face    each face's own frame, from its UV edges;
-//   vertex  frames averaged over the faces around each vertex;
+//   vertex  frames averaged over the faces around each vertex (weighted by
+//           each face's area times its angle at the vertex);
 //   split   the same, but a vertex's faces whose UVs are mirrored (or turned
 //           away) from each other get separate frames, as the seam needs.
 // Each frame is orthogonalised against the corner's normal and stored as

@@ -111,6 +111,19 @@ TEST(NormalMappingTest, SeamsAndPolesOfTheGlobeGetFiniteOrthonormalFrames) {
         expect_orthonormal(corner_tangents(globe, normals, m), normals);
 }
 
+TEST(NormalMappingTest, AModelWithoutNormalsGetsComputedNormalsAndFrames) {
+    const rl::Mesh mesh = rl::parse_obj(
+        "v 0 0 0\nv 1 0 0\nv 1 1 0.2\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+        "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\n",
+        "", "no_normals.obj");
+    std::size_t computed = 0;
+    const std::vector<rl::vec3> normals =
+        shading::corner_normals(mesh, shading::Weighting::angle, &computed);
+    EXPECT_EQ(computed, 6u);
+    for (TangentMethod m : kTangentMethods)
+        expect_orthonormal(corner_tangents(mesh, normals, m), normals);
+}
+
 TEST(NormalMappingTest, AModelWithoutUvsIgnoresItsMapsWithAWarning) {
     const auto dir = std::filesystem::temp_directory_path() / "rasterlab_07_no_uvs";
     std::filesystem::create_directories(dir);
