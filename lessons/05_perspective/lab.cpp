@@ -78,11 +78,8 @@ UvFrame draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera, i
         return rl::Rgba{};
     };
     for (std::size_t i = 0; i < scene.size(); ++i) {
-        std::array<ClipVertex<rl::vec2>, 3> v;
-        for (int k = 0; k < 3; ++k)
-            v[static_cast<std::size_t>(k)] = {vp * rl::extend(rl::cast<float>(scene[i].p[k]), 1.0f),
-                                              rl::cast<float>(scene[i].uv[k])};
-        draw_triangle(v, planes, options, frame.target(), pixel_stage, static_cast<int>(i), counts);
+        draw_triangle(clip_vertices(scene[i], vp), planes, options, frame.target(), pixel_stage,
+                      static_cast<int>(i), counts);
     }
     out.fragments = counts.fragments;
     return out;

@@ -71,6 +71,15 @@ rl::Grid<int> exact_ids(const std::vector<WorldTriangle>& scene, const RayCamera
     return ids;
 }
 
+std::array<ClipVertex<rl::vec2>, 3> clip_vertices(const WorldTriangle& t,
+                                                  const rl::mat4& view_projection) {
+    std::array<ClipVertex<rl::vec2>, 3> v;
+    for (std::size_t k = 0; k < 3; ++k)
+        v[k] = {view_projection * rl::extend(rl::cast<float>(t.p[k]), 1.0f),
+                rl::cast<float>(t.uv[k])};
+    return v;
+}
+
 rl::Grid<int> pipeline_ids(const std::vector<WorldTriangle>& scene, const Camera& camera, int width,
                            int height, const PipelineOptions& options, PipelineCounts* counts) {
     zbuffer::Frame frame(width, height);
@@ -83,11 +92,8 @@ rl::Grid<int> pipeline_ids(const std::vector<WorldTriangle>& scene, const Camera
         return rl::Rgba{};
     };
     for (std::size_t i = 0; i < scene.size(); ++i) {
-        std::array<ClipVertex<rl::vec2>, 3> v;
-        for (int k = 0; k < 3; ++k)
-            v[static_cast<std::size_t>(k)] = {vp * rl::extend(rl::cast<float>(scene[i].p[k]), 1.0f),
-                                              rl::cast<float>(scene[i].uv[k])};
-        draw_triangle(v, planes, options, frame.target(), pixel_stage, static_cast<int>(i), local);
+        draw_triangle(clip_vertices(scene[i], vp), planes, options, frame.target(), pixel_stage,
+                      static_cast<int>(i), local);
     }
     if (counts) *counts += local;
     return frame.ids;

@@ -52,6 +52,11 @@ std::optional<Hit> intersect(const WorldTriangle& t, rl::dvec3 eye, rl::dvec3 di
 // between the near and far planes, or -1.
 rl::Grid<int> exact_ids(const std::vector<WorldTriangle>& scene, const RayCamera& rays);
 
+// A world triangle's corners for the pipeline: clip positions by the
+// view-projection matrix, texture coordinates as the varyings.
+std::array<ClipVertex<rl::vec2>, 3> clip_vertices(const WorldTriangle& t,
+                                                  const rl::mat4& view_projection);
+
 // The scene drawn through the pipeline with the given options, each pixel
 // holding the index of the triangle it shows (-1 for none).
 rl::Grid<int> pipeline_ids(const std::vector<WorldTriangle>& scene, const Camera& camera, int width,

@@ -10,9 +10,6 @@ rl::vec3 area_normal(const rl::Mesh& mesh, const rl::Face& face) {
     return rl::cross(p1 - p0, p2 - p0);
 }
 
-namespace {
-
-// The angle of the face at corner k, in radians (0 for a degenerate corner).
 float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k) {
     const rl::vec3 p = mesh.position(face, k);
     const rl::vec3 a = mesh.position(face, (k + 1) % 3) - p,
@@ -21,8 +18,6 @@ float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k) {
     if (!(la > 0 && lb > 0)) return 0;
     return std::acos(std::clamp(rl::dot(a, b) / (la * lb), -1.0f, 1.0f));
 }
-
-}  // namespace
 
 // [doc:vertex-normals]
 std::vector<rl::vec3> vertex_normals(const rl::Mesh& mesh, Weighting weighting) {

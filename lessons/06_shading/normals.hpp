@@ -20,6 +20,10 @@ namespace shading {
 // towards the side they are seen counter-clockwise from.
 rl::vec3 area_normal(const rl::Mesh& mesh, const rl::Face& face);
 
+// The angle of the face at its corner k, in radians (0 when an edge there
+// has no length).
+float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k);
+
 // How a vertex's faces are weighted when its normal is their average: by
 // area (a big face counts more), or by the angle the face makes at the
 // vertex (independent of how the surface was cut into triangles).

@@ -1,5 +1,7 @@
 #include "sphere_truth.hpp"
 
+#include "05_perspective/ray_truth.hpp"
+
 #include <cmath>
 #include <numbers>
 
@@ -67,17 +69,12 @@ rl::Image sphere_truth(const perspective::Camera& camera, int width, int height,
     l.ambient = rl::cast<double>(lighting.ambient);
     l.specular = rl::cast<double>(lighting.specular);
     l.shininess = lighting.shininess;
-    const rl::dvec3 eye = rl::cast<double>(camera.eye);
-    const rl::dvec3 forward = rl::normalize(rl::cast<double>(camera.target) - eye);
-    const rl::dvec3 right = rl::normalize(rl::cross(forward, rl::cast<double>(camera.up)));
-    const rl::dvec3 up = rl::cross(right, forward);
-    const double tan_y = std::tan(camera.fov_y * std::numbers::pi / 360.0);
-    const double tan_x = tan_y * width / height;
+    const perspective::RayCamera rays(camera, width, height);  // lesson 05's pixel rays
+    const rl::dvec3 eye = rays.eye();
     rl::Image out(width, height, background);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            const double nx = (x + 0.5) / width * 2 - 1, ny = (y + 0.5) / height * 2 - 1;
-            const rl::dvec3 d = rl::normalize(forward + right * (nx * tan_x) + up * (ny * tan_y));
+            const rl::dvec3 d = rl::normalize(rays.direction(x + 0.5, y + 0.5));
             // |eye + t d|^2 = 1: t^2 + 2 (eye . d) t + |eye|^2 - 1 = 0.
             const double b = rl::dot(eye, d), c = rl::dot(eye, eye) - 1;
             const double disc = b * b - c;

@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "03_zbuffer/hidden_surfaces.hpp"
+#include "05_perspective/ray_truth.hpp"
 #include "globe_relief.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
@@ -67,16 +68,12 @@ rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl:
 // whose (u, v) give the relief's normal.
 rl::Grid<rl::vec3> exact_normals(const Globe& g) {
     rl::Grid<rl::vec3> out(g.size, g.size, rl::vec3{NAN, NAN, NAN});
-    const rl::dvec3 eye = rl::cast<double>(g.camera.eye);
-    const rl::dvec3 forward = rl::normalize(rl::cast<double>(g.camera.target) - eye);
-    const rl::dvec3 right = rl::normalize(rl::cross(forward, rl::cast<double>(g.camera.up)));
-    const rl::dvec3 up = rl::cross(right, forward);
-    const double tan_y = std::tan(g.camera.fov_y * std::numbers::pi / 360.0);
+    const perspective::RayCamera rays(g.camera, g.size, g.size);  // lesson 05's pixel rays
+    const rl::dvec3 eye = rays.eye();
     const double r = assets::kGlobeRadius;
     for (int y = 0; y < g.size; ++y)
         for (int x = 0; x < g.size; ++x) {
-            const double nx = (x + 0.5) / g.size * 2 - 1, ny = (y + 0.5) / g.size * 2 - 1;
-            const rl::dvec3 d = rl::normalize(forward + right * (nx * tan_y) + up * (ny * tan_y));
+            const rl::dvec3 d = rl::normalize(rays.direction(x + 0.5, y + 0.5));
             const double b = rl::dot(eye, d), c = rl::dot(eye, eye) - r * r, disc = b * b - c;
             if (disc < 0) continue;
             const rl::dvec3 p = (eye + d * (-b - std::sqrt(disc))) / r;  // on the unit sphere

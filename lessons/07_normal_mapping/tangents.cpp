@@ -1,5 +1,7 @@
 #include "tangents.hpp"
 
+#include "06_shading/normals.hpp"
+
 #include <cmath>
 
 namespace normal_mapping {
@@ -21,16 +23,6 @@ rl::vec4 orthonormal_frame(rl::vec3 n, rl::vec3 t, rl::vec3 b) {
     if (!(rl::length(tangent) > 0.5f)) tangent = any_tangent(n);  // t was zero or along n
     const float w = rl::dot(rl::cross(n, tangent), b) < 0 ? -1.0f : 1.0f;
     return {tangent.x, tangent.y, tangent.z, w};
-}
-
-// The angle of the face at corner k (0 when degenerate), as a weight.
-float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k) {
-    const rl::vec3 p = mesh.position(face, k);
-    const rl::vec3 a = mesh.position(face, (k + 1) % 3) - p,
-                   b = mesh.position(face, (k + 2) % 3) - p;
-    const float la = rl::length(a), lb = rl::length(b);
-    if (!(la > 0 && lb > 0)) return 0;
-    return std::acos(std::clamp(rl::dot(a, b) / (la * lb), -1.0f, 1.0f));
 }
 
 }  // namespace
@@ -107,7 +99,7 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
                 }
             if (s == here.size()) here.push_back({{}, {}, right_handed});
             // The seed notes' weight: the face's area times its angle here.
-            const float weight = corner_angle(mesh, face, k) * area;
+            const float weight = shading::corner_angle(mesh, face, k) * area;
             here[s].tangent += t * weight;
             here[s].bitangent += b * weight;
             slot_of[3 * f + static_cast<std::size_t>(k)] = s;

@@ -133,9 +133,7 @@ double largest_uv_error(Interpolation interpolation, double* largest_derivative_
     const RayCamera rays(camera, width, height);
     zbuffer::Frame frame(width, height);
     const rl::mat4 vp = view_projection(camera, 160.0f / 120.0f);
-    std::array<ClipVertex<rl::vec2>, 3> v;
-    for (int k = 0; k < 3; ++k)
-        v[k] = {vp * rl::extend(rl::cast<float>(floor.p[k]), 1.0f), rl::cast<float>(floor.uv[k])};
+    const std::array<ClipVertex<rl::vec2>, 3> v = clip_vertices(floor, vp);
     PipelineOptions options;
     options.interpolation = interpolation;
     double worst = 0, worst_derivative = 0;
