@@ -28,6 +28,22 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
     return models;
 }
 
+std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection,
+                            const perspective::Camera& camera, const Lighting<float>& lighting,
+                            const textures::SamplerState& sampler, bool cull_objects,
+                            perspective::PipelineCounts& counts) {
+    const perspective::Model& m = lit.model;
+    const rl::mat4 mvp = view_projection * m.transform;
+    if (cull_objects && perspective::outside_frustum(m.box, mvp)) {
+        ++counts.objects_culled;
+        return std::nullopt;
+    }
+    const std::optional<rl::mat3> normals = normal_matrix(m.transform);
+    if (!normals) return std::nullopt;  // a flattened model (a zero scale) has no surface to light
+    return Placed{{m.transform, *normals, mvp, camera.eye, lighting, &m.texture, sampler, {}},
+                  {m.mesh, lit.normals, rl::determinant(linear_part(m.transform)) < 0}};
+}
+
 // [doc:render-lit]
 perspective::PipelineCounts render(const std::vector<LitModel>& models,
                                    const perspective::Camera& camera, const ShadingOptions& options,
@@ -35,23 +51,15 @@ perspective::PipelineCounts render(const std::vector<LitModel>& models,
     const float aspect =
         static_cast<float>(frame.colour.width()) / static_cast<float>(frame.colour.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    textures::SamplerState sampler;
+    sampler.filter = options.filter;
+    sampler.encoding = options.output == Output::srgb ? &srgb_texels() : nullptr;
     perspective::PipelineCounts counts;
-    for (const LitModel& lit : models) {
-        const perspective::Model& m = lit.model;
-        const rl::mat4 mvp = view_projection * m.transform;
-        if (options.pipeline.cull_objects && perspective::outside_frustum(m.box, mvp)) {
-            ++counts.objects_culled;
-            continue;
-        }
-        const std::optional<rl::mat3> normals = normal_matrix(m.transform);
-        if (!normals) continue;  // a flattened model (a zero scale) has no surface to light
-        Uniforms u{m.transform, *normals, mvp, camera.eye, options.lighting, &m.texture, {}, {}};
-        u.sampler.filter = options.filter;
-        u.sampler.encoding = options.output == Output::srgb ? &srgb_texels() : nullptr;
-        const Surface surface{m.mesh, lit.normals, rl::determinant(linear_part(m.transform)) < 0};
-        counts +=
-            draw_model(options.model, surface, u, frame.target(), options.pipeline, options.output);
-    }
+    for (const LitModel& lit : models)
+        if (const std::optional<Placed> p = place(lit, view_projection, camera, options.lighting,
+                                                  sampler, options.pipeline.cull_objects, counts))
+            counts += draw_model(options.model, p->surface, p->uniforms, frame.target(),
+                                 options.pipeline, options.output);
     return counts;
 }
 // [/doc:render-lit]

@@ -34,6 +34,20 @@ struct ShadingOptions {
     textures::Filter filter = textures::Filter::trilinear;
 };
 
+// A model as one frame draws it: its uniforms (model, normal and
+// model-view-projection matrices, the eye, the lights, its texture sampled by
+// `sampler`) and its surface. Empty when the model's box lies outside the
+// frustum (counted in `counts`, if `cull_objects`) or its model matrix
+// flattens it (no normal matrix, nothing to light).
+struct Placed {
+    Uniforms uniforms;
+    Surface surface;
+};
+std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection,
+                            const perspective::Camera& camera, const Lighting<float>& lighting,
+                            const textures::SamplerState& sampler, bool cull_objects,
+                            perspective::PipelineCounts& counts);
+
 perspective::PipelineCounts render(const std::vector<LitModel>& models,
                                    const perspective::Camera& camera, const ShadingOptions& options,
                                    zbuffer::Frame& frame);

@@ -34,25 +34,23 @@ perspective::PipelineCounts render(const std::vector<MappedModel>& models,
     const float aspect =
         static_cast<float>(frame.colour.width()) / static_cast<float>(frame.colour.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    textures::SamplerState sampler;  // the diffuse texture: sRGB, trilinear
+    sampler.filter = textures::Filter::trilinear;
+    sampler.encoding = &shading::srgb_texels();
     perspective::PipelineCounts counts;
     for (const MappedModel& m : models) {
-        const perspective::Model& model = m.lit.model;
-        const rl::mat4 mvp = view_projection * model.transform;
-        if (options.pipeline.cull_objects && perspective::outside_frustum(model.box, mvp)) {
-            ++counts.objects_culled;
-            continue;
-        }
-        const std::optional<rl::mat3> normals = shading::normal_matrix(model.transform);
-        if (!normals) continue;  // a flattened model has no surface to light
-        shading::Uniforms u{model.transform,  *normals,       mvp, camera.eye,
-                            options.lighting, &model.texture, {},  {}};
-        u.sampler.filter = textures::Filter::trilinear;
-        u.sampler.encoding = &shading::srgb_texels();
-        const bool mirrored = rl::determinant(shading::linear_part(model.transform)) < 0;
-        NormalMappedShader shader{
-            u, m.maps, options.normal_map, options.specular, mirrored ? -1.0f : 1.0f, &m.tangents};
-        counts += shading::draw(shading::Surface{model.mesh, m.lit.normals, mirrored}, shader,
-                                frame.target(), options.pipeline, shading::Output::srgb);
+        const std::optional<shading::Placed> p =
+            shading::place(m.lit, view_projection, camera, options.lighting, sampler,
+                           options.pipeline.cull_objects, counts);
+        if (!p) continue;
+        const NormalMappedShader shader{p->uniforms,
+                                        m.maps,
+                                        options.normal_map,
+                                        options.specular,
+                                        p->surface.mirrored ? -1.0f : 1.0f,
+                                        &m.tangents};
+        counts += shading::draw(p->surface, shader, frame.target(), options.pipeline,
+                                shading::Output::srgb);
     }
     return counts;
 }
