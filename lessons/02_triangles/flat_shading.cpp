@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "05_perspective/pipeline.hpp"
+#include "01_lines/viewport.hpp"
+#include "draw_faces.hpp"
 
 namespace triangles {
 
@@ -28,21 +29,15 @@ rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Face& face, const FlatOptio
 DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options) {
     std::vector<rl::Rgba> colours;  // one per face: flat shading
     for (const rl::Face& face : mesh.faces) colours.push_back(face_colour(mesh, face, options));
-    perspective::PipelineOptions pipeline;
-    pipeline.clip = perspective::ClipMode::none;  // orthographic: w = 1 everywhere
-    pipeline.interpolation = perspective::Interpolation::affine;
-    pipeline.cull_back_faces = options.cull_back_faces;
-    pipeline.raster = options.method;
-    const perspective::PipelineCounts counts = perspective::draw_mesh<float>(
-        mesh, {image}, pipeline,
+    const int width = image.width(), height = image.height();
+    return draw_faces(
+        mesh, width, height, {options.method, options.cull_back_faces},
         [&](const rl::Face& face, int corner) {  // the vertex stage: where the corner goes
-            return perspective::ClipVertex<float>{
-                perspective::orthographic_clip(mesh.position(face, corner)), 0.0f};
+            return lines::orthographic_to_window(mesh.position(face, corner), width, height);
         },
-        [&](const perspective::Fragment<float>& fragment) {  // the per-pixel stage: its colour
-            return colours[static_cast<std::size_t>(fragment.face())];
+        [&](const WindowTriangle& t, int x, int y, rl::vec3) {  // the fragment stage: its colour
+            image.at(x, y) = colours[static_cast<std::size_t>(t.face)];
         });
-    return {counts.drawn, counts.back_faces, counts.refused};
 }
 // [/doc:flat-shading]
 

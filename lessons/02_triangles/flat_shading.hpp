@@ -35,9 +35,9 @@ rl::Rgba lit(rl::Rgba colour, float light);
 // own normal.
 rl::Rgba face_colour(const rl::Mesh& mesh, const rl::Face& face, const FlatOptions& options);
 
-// Draws every face through the pipeline (lesson 05 explains it in full; here
-// the camera is orthographic and there is no depth test: the last face drawn
-// wins), back faces culled, each face in its own flat colour.
+// Draws every face through lesson 02's draw loop (draw_faces.hpp):
+// orthographic, back faces culled, no depth test (the last face drawn wins),
+// each face in its own flat colour.
 DrawCounts draw_flat_shaded(rl::Image& image, const rl::Mesh& mesh, const FlatOptions& options);
 
 // The classic first picture: three triangles (red, white, green) in a

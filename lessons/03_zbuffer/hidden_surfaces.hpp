@@ -16,7 +16,6 @@
 #include <memory>
 #include <stdexcept>
 
-#include "05_perspective/pipeline.hpp"
 #include "depth_test.hpp"
 #include "scene.hpp"
 
@@ -37,8 +36,6 @@ struct Frame {
     std::size_t refused = 0;  // triangles the rasterizer refused (see triangles::rasterize)
     Frame(int width, int height, rl::Rgba background = rl::kBackground)
         : colour(width, height, background), ids(width, height, -1), depth(width, height, 1.0f) {}
-    // The colour and depth images, as the pipeline draws into them.
-    perspective::RenderTarget target() { return {colour, &depth}; }
 };
 
 // Draws every triangle in the given order with no depth test: the last one wins.

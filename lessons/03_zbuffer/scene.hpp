@@ -29,10 +29,16 @@ struct Placement {
     rl::vec3 offset{};
 };
 
-// Loads and places the models, and takes each face through the first half
-// of the pipeline (lesson 05): orthographic as in lessons 01 and 02 (x, y in
-// [-1, 1] fill the image; the viewer looks down -z, so window depth is
-// (1 - z) / 2: z = 1 is nearest), back faces culled (added to `culled`).
+// Lesson 01's orthographic view with a depth: x, y in [-1, 1] fill the
+// image, and as the viewer looks down -z the window depth is (1 - z) / 2, so
+// z = 1 is nearest (depth 0) and z = -1 farthest (depth 1).
+inline rl::vec3 orthographic_to_window(rl::vec3 p, int width, int height) {
+    return rl::ndc_to_window({p.x, p.y, -p.z}, width, height);
+}
+
+// Loads and places the models, puts each face in the window
+// (orthographic_to_window), culls back faces as lesson 02 does (added to
+// `culled`).
 // Each face is shaded flat (lesson 02's Lambert) and numbered in order.
 std::vector<SceneTriangle> build_scene(const std::vector<Placement>& placements, int width,
                                        int height, std::vector<std::string>* warnings = nullptr,

@@ -1,7 +1,7 @@
 #include "textured.hpp"
 
+#include "02_triangles/draw_faces.hpp"
 #include "02_triangles/flat_shading.hpp"
-#include "05_perspective/pipeline.hpp"
 
 namespace textures {
 
@@ -14,11 +14,6 @@ UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]) {
     return {(t1 * e2.y - t2 * e1.y) / det, (t2 * e1.x - t1 * e2.x) / det};
 }
 // [/doc:affine-derivatives]
-
-UvDerivatives affine_derivatives(const perspective::TriangleSetup<rl::vec2>& t) {
-    const rl::vec2 window[3] = {t.window[0].xy(), t.window[1].xy(), t.window[2].xy()};
-    return affine_derivatives(window, t.vertex);
-}
 
 namespace {
 
@@ -41,13 +36,10 @@ TexturedFace textured_face(const rl::Mesh& mesh, const rl::Face& face,
     TexturedFace out;
     for (int k = 0; k < 3; ++k) {
         out.world[k] = placed(mesh, face, k, options);
-        out.window[k] =
-            rl::ndc_to_window(perspective::orthographic_clip(out.world[k]).xyz(), width, height);
+        out.window[k] = zbuffer::orthographic_to_window(out.world[k], width, height);
         out.uv[k] = texture_coordinates(mesh, face, k, options);
     }
-    out.front = !(perspective::facing(perspective::orthographic_clip(out.world[0]),
-                                      perspective::orthographic_clip(out.world[1]),
-                                      perspective::orthographic_clip(out.world[2])) <= 0);
+    out.front = !triangles::is_back_face(out.screen());
     return out;
 }
 
@@ -60,26 +52,29 @@ triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
                        p2 = placed(mesh, face, 2, options);
         shade[i] = triangles::lambert(rl::cross(p1 - p0, p2 - p0), triangles::kDefaultLight);
     }
-    perspective::PipelineOptions pipeline;
-    pipeline.clip = perspective::ClipMode::none;  // orthographic: w = 1, nothing to cut
-    pipeline.interpolation = perspective::Interpolation::affine;  // exact when w = 1
+    const int width = frame.colour.width(), height = frame.colour.height();
     // [doc:textured-pixel]
     const auto vertex_stage = [&](const rl::Face& face, int corner) {
-        return perspective::ClipVertex<rl::vec2>{
-            perspective::orthographic_clip(placed(mesh, face, corner, options)),
-            texture_coordinates(mesh, face, corner, options)};
+        return zbuffer::orthographic_to_window(placed(mesh, face, corner, options), width, height);
     };
-    const auto pixel_stage = [&](const perspective::Fragment<rl::vec2>& f) {
-        // The derivatives are constant over the triangle (affine mapping).
-        rl::vec4 colour =
-            sample(texture, f.varyings, affine_derivatives(*f.triangle), options.sampler);
-        const float s = shade[static_cast<std::size_t>(f.face())];
-        return to_rgba({colour.x * s, colour.y * s, colour.z * s, 1.0f});
+    const auto fragment_stage = [&](const triangles::WindowTriangle& t, int x, int y, rl::vec3 b) {
+        // Lesson 03's depth test first: a hidden pixel costs no texture lookup.
+        const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
+        if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
+        const rl::Face& face = mesh.faces[static_cast<std::size_t>(t.face)];
+        const rl::vec2 uv[3] = {texture_coordinates(mesh, face, 0, options),
+                                texture_coordinates(mesh, face, 1, options),
+                                texture_coordinates(mesh, face, 2, options)};
+        // The texture coordinates are linear across the window (w = 1: no
+        // perspective yet), so their derivatives are constant over the triangle.
+        const rl::vec2 window[3] = {t.window[0].xy(), t.window[1].xy(), t.window[2].xy()};
+        const rl::vec4 colour = sample(texture, triangles::interpolate(b, uv[0], uv[1], uv[2]),
+                                       affine_derivatives(window, uv), options.sampler);
+        const float s = shade[static_cast<std::size_t>(t.face)];
+        frame.colour.at(x, y) = to_rgba({colour.x * s, colour.y * s, colour.z * s, 1.0f});
     };
     // [/doc:textured-pixel]
-    const perspective::PipelineCounts counts =
-        perspective::draw_mesh<rl::vec2>(mesh, frame.target(), pipeline, vertex_stage, pixel_stage);
-    return {counts.drawn, counts.back_faces, counts.refused};
+    return triangles::draw_faces(mesh, width, height, {}, vertex_stage, fragment_stage);
 }
 
 }  // namespace textures

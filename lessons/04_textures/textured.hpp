@@ -7,7 +7,6 @@
 #pragma once
 
 #include "03_zbuffer/hidden_surfaces.hpp"
-#include "05_perspective/pipeline.hpp"
 #include "rasterlab/mesh.hpp"
 #include "sampling.hpp"
 
@@ -28,8 +27,6 @@ struct TexturedOptions {
 // The constant derivatives of an affine texture mapping over a triangle:
 // solve uv(p) = uv0 + A (p - p0) for the 2x2 matrix A from two edges.
 UvDerivatives affine_derivatives(const rl::vec2 p[3], const rl::vec2 uv[3]);
-// The same for a triangle the pipeline has set up (window x, y and uv).
-UvDerivatives affine_derivatives(const perspective::TriangleSetup<rl::vec2>& t);
 
 // One face as draw_textured sees it: window coordinates (x, y in pixels, z
 // the window depth), texture coordinates after uv_scale and uv_offset, and
@@ -45,8 +42,8 @@ struct TexturedFace {
 TexturedFace textured_face(const rl::Mesh& mesh, const rl::Face& face,
                            const TexturedOptions& options, int width, int height);
 
-// Draws the mesh into the frame through the pipeline (orthographic, lesson
-// 03's depth test); returns how many faces were drawn, culled as back
+// Draws the mesh into the frame through lesson 02's draw loop (orthographic,
+// lesson 03's depth test); returns how many faces were drawn, culled as back
 // faces, and refused by the rasterizer.
 triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
                                     const MipChain& texture, const TexturedOptions& options);

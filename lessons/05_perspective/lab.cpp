@@ -78,7 +78,7 @@ UvFrame draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera, i
         return rl::Rgba{};
     };
     for (std::size_t i = 0; i < scene.size(); ++i) {
-        draw_triangle(clip_vertices(scene[i], vp), planes, options, frame.target(), pixel_stage,
+        draw_triangle(clip_vertices(scene[i], vp), planes, options, perspective::target_of(frame), pixel_stage,
                       static_cast<int>(i), counts);
     }
     out.fragments = counts.fragments;

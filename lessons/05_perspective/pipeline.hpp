@@ -9,9 +9,9 @@
 // face into a clip-space position and the attributes ("varyings") to carry
 // to the pixels; the per-pixel stage turns a Fragment (the interpolated
 // varyings, their screen derivatives on request) into a colour. Everything
-// between is here, once, and every drawing lesson goes through it: lessons
-// 02-04 with their orthographic camera (w = 1, nothing to clip), lesson 05
-// and later with a perspective one. Derivations: docs/05_perspective.md.
+// between is here, once, and every drawing lesson from 05 on goes through
+// it (lessons 02-04 drew through lesson 02's shorter loop, draw_faces.hpp).
+// Derivations: docs/05_perspective.md.
 //
 //   const rl::mat4 mvp = perspective::view_projection(camera, aspect) * model;
 //   perspective::draw_mesh<rl::vec2>(
@@ -34,6 +34,7 @@
 
 #include "02_triangles/raster.hpp"
 #include "03_zbuffer/depth_test.hpp"
+#include "03_zbuffer/hidden_surfaces.hpp"
 #include "camera.hpp"
 #include "clipping.hpp"
 #include "rasterlab/mesh.hpp"
@@ -67,6 +68,10 @@ struct RenderTarget {
     rl::Image& colour;
     rl::FloatImage* depth = nullptr;
 };
+
+inline RenderTarget target_of(zbuffer::Frame& frame) {
+    return {frame.colour, &frame.depth};
+}
 
 // What became of the work: every count the lab reports.
 struct PipelineCounts {
@@ -276,12 +281,5 @@ PipelineCounts draw_mesh(const rl::Mesh& mesh, RenderTarget target, const Pipeli
     return counts;
 }
 // [/doc:draw-mesh]
-
-// Lessons 01-04's camera as a vertex stage's clip position: x and y in
-// [-1, 1] fill the image, the viewer looks down -z (clip z = -z, so window
-// depth is (1 - z) / 2: z = 1 is nearest), and w = 1: nothing recedes.
-inline rl::vec4 orthographic_clip(rl::vec3 p) {
-    return {p.x, p.y, -p.z, 1.0f};
-}
 
 }  // namespace perspective

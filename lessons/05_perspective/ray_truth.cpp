@@ -92,7 +92,7 @@ rl::Grid<int> pipeline_ids(const std::vector<WorldTriangle>& scene, const Camera
         return rl::Rgba{};
     };
     for (std::size_t i = 0; i < scene.size(); ++i) {
-        draw_triangle(clip_vertices(scene[i], vp), planes, options, frame.target(), pixel_stage,
+        draw_triangle(clip_vertices(scene[i], vp), planes, options, perspective::target_of(frame), pixel_stage,
                       static_cast<int>(i), local);
     }
     if (counts) *counts += local;

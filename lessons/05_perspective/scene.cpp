@@ -63,6 +63,13 @@ std::vector<float> face_light(const Model& model, const RenderOptions& options) 
     return light;
 }
 
+// Lesson 04's per-triangle estimate, from the set-up triangle's window
+// positions and texture coordinates.
+textures::UvDerivatives affine_derivatives(const TriangleSetup<rl::vec2>& t) {
+    const rl::vec2 window[3] = {t.window[0].xy(), t.window[1].xy(), t.window[2].xy()};
+    return textures::affine_derivatives(window, t.vertex);
+}
+
 }  // namespace
 
 // [doc:render-model]
@@ -88,13 +95,13 @@ PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
             // from the triangle's corners (the same for the whole triangle).
             const textures::UvDerivatives d = options.lod == LodMethod::pixel
                                                   ? textures::UvDerivatives{f.d_dx(), f.d_dy()}
-                                                  : textures::affine_derivatives(*f.triangle);
+                                                  : affine_derivatives(*f.triangle);
             const rl::vec4 c = textures::sample(model.texture, f.varyings, d, options.sampler);
             const float shade = light[static_cast<std::size_t>(f.face())];
             return textures::to_rgba({c.x * shade, c.y * shade, c.z * shade, 1.0f});
         };
-        counts += draw_mesh<rl::vec2>(model.mesh, frame.target(), options.pipeline, vertex_stage,
-                                      pixel_stage);
+        counts += draw_mesh<rl::vec2>(model.mesh, perspective::target_of(frame), options.pipeline,
+                                      vertex_stage, pixel_stage);
     }
     return counts;
 }

@@ -47,7 +47,7 @@ rl::Image draw_sphere(const Setup& s, const Case& c) {
     if (c.output == Output::naive)  // the albedo as the byte that stores it, taken as light
         u.colour = {linear_to_srgb(s.albedo.x), linear_to_srgb(s.albedo.y),
                     linear_to_srgb(s.albedo.z)};
-    draw_model(c.model, Surface{c.mesh, c.normals}, u, frame.target(), {}, c.output);
+    draw_model(c.model, Surface{c.mesh, c.normals}, u, perspective::target_of(frame), {}, c.output);
     return frame.colour;
 }
 

@@ -58,7 +58,7 @@ perspective::PipelineCounts render(const std::vector<LitModel>& models,
     for (const LitModel& lit : models)
         if (const std::optional<Placed> p = place(lit, view_projection, camera, options.lighting,
                                                   sampler, options.pipeline.cull_objects, counts))
-            counts += draw_model(options.model, p->surface, p->uniforms, frame.target(),
+            counts += draw_model(options.model, p->surface, p->uniforms, perspective::target_of(frame),
                                  options.pipeline, options.output);
     return counts;
 }

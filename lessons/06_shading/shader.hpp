@@ -8,7 +8,7 @@
 //
 //   shading::draw(shading::Surface{mesh, normals},
 //                 shading::UnlitShader{mvp, {1, 0, 0}},  // shaders.hpp: a complete shader
-//                 frame.target(), {});
+//                 perspective::target_of(frame), {});
 #pragma once
 
 #include <concepts>

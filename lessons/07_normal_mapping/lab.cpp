@@ -59,7 +59,7 @@ rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl:
     zbuffer::Frame frame(g.size, g.size);
     const NormalProbe p{{g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents},
                         &normals};
-    shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, p, frame.target(),
+    shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, p, perspective::target_of(frame),
                   {});
     return normals;
 }
@@ -130,7 +130,7 @@ void frame_ours(benchmark::State& state, const SpeedScene* s) {
             g.uniforms, g.model.maps,     NormalMap::tangent, shading::Specular::phong,
             1.0f,       &g.model.tangents};
         shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, shader,
-                      frame.target(), {});
+                      perspective::target_of(frame), {});
         benchmark::DoNotOptimize(frame.colour.get(0, 0));
     }
 }
@@ -157,7 +157,7 @@ void render_globe(benchmark::State& state, const Timed* t) {
             t->globe->uniforms, *t->maps, t->source, shading::Specular::blinn_phong, 1.0f,
             t->tangents};
         shading::draw(shading::Surface{t->globe->model.lit.model.mesh, t->globe->model.lit.normals},
-                      shader, frame.target(), {});
+                      shader, perspective::target_of(frame), {});
         benchmark::DoNotOptimize(frame.colour.get(0, 0));
     }
 }

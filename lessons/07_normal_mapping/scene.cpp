@@ -49,7 +49,7 @@ perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                         options.specular,
                                         p->surface.mirrored ? -1.0f : 1.0f,
                                         &m.tangents};
-        counts += shading::draw(p->surface, shader, frame.target(), options.pipeline,
+        counts += shading::draw(p->surface, shader, perspective::target_of(frame), options.pipeline,
                                 shading::Output::srgb);
     }
     return counts;

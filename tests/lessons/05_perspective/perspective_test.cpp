@@ -151,7 +151,7 @@ double largest_uv_error(Interpolation interpolation, double* largest_derivative_
                                       std::max(rl::length((right - left) * 0.5), 1e-9));
         return rl::Rgba{};
     };
-    draw_triangle(v, clip_planes(options.clip, width, height), options, frame.target(), pixel_stage,
+    draw_triangle(v, clip_planes(options.clip, width, height), options, perspective::target_of(frame), pixel_stage,
                   0, counts);
     EXPECT_GT(counts.fragments, 1000u);
     if (largest_derivative_error) *largest_derivative_error = worst_derivative;

@@ -138,7 +138,7 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     u.lighting.lights.resize(1);
     zbuffer::Frame frame(64, 64);
     const perspective::PipelineCounts counts = draw_model(
-        Model::blinn_phong, Surface{sphere, normals, true}, u, frame.target(), {}, Output::srgb);
+        Model::blinn_phong, Surface{sphere, normals, true}, u, perspective::target_of(frame), {}, Output::srgb);
     EXPECT_GT(counts.fragments, 1000u);
     // Lit from +x: the right half is brighter than the left.
     EXPECT_GT(frame.colour.get(44, 32).r, frame.colour.get(20, 32).r + 40);
@@ -217,9 +217,9 @@ TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
     const rl::mat4 ortho = rl::mat4::identity();
     zbuffer::Frame frame(16, 16);
     const Surface surface{quad, normals};
-    draw(surface, DiscardEverything{ortho * near}, frame.target(), {}, Output::naive);
+    draw(surface, DiscardEverything{ortho * near}, perspective::target_of(frame), {}, Output::naive);
     const perspective::PipelineCounts counts =
-        draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, frame.target(), {}, Output::naive);
+        draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, perspective::target_of(frame), {}, Output::naive);
     EXPECT_EQ(counts.fragments, 256u);
     EXPECT_EQ(frame.colour.get(8, 8).r, 255);
 }
@@ -250,7 +250,7 @@ TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
             u.colour = {linear_to_srgb(albedo.x), linear_to_srgb(albedo.y),
                         linear_to_srgb(albedo.z)};
         zbuffer::Frame frame(96, 96);
-        draw_model(Model::blinn_phong, Surface{sphere, normals}, u, frame.target(), {}, o);
+        draw_model(Model::blinn_phong, Surface{sphere, normals}, u, perspective::target_of(frame), {}, o);
         error[o == Output::srgb ? 0 : 1] =
             compare_spheres(truth, frame.colour, rl::kBackground).interior_rmse;
     }
