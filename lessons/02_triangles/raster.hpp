@@ -42,18 +42,33 @@ inline const char* name(RasterMethod value) {
 // Fills the triangle with the chosen method. Returns false when the method
 // refused the triangle: a NaN or infinite vertex, or one farther than
 // kMaxCoordinate (2^22 pixels) from the origin. Every method keeps its
-// calls to `shade` inside [0, width) x [0, height) for every input.
+// calls to `shade` inside `rect` for every input, and gives a pixel the same
+// weights whatever rectangle it is drawn through (so tiles add up to the
+// whole image, bit for bit).
 template <class Shade>
-bool rasterize(RasterMethod method, const ScreenTriangle& t, int width, int height, Shade&& shade) {
+bool rasterize(RasterMethod method, const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
     switch (method) {
         case RasterMethod::scanline:
-            return rasterize_scanline(t, width, height, shade);
+            return rasterize_scanline(t, rect, shade);
         case RasterMethod::bbox:
-            return rasterize_bbox(t, width, height, shade);
+            return rasterize_bbox(t, rect, shade);
         case RasterMethod::edge:
-            return rasterize_edge(t, width, height, shade);
+            return rasterize_edge(t, rect, shade);
     }
     return false;
+}
+
+// The weights `method` gives pixel (x, y) of the triangle (wherever the
+// pixel lies, inside or not): exactly those it hands to `shade`.
+inline rl::vec3 weights_at(RasterMethod method, const ScreenTriangle& t, int x, int y) {
+    if (method == RasterMethod::edge) return edge_weights_at(t, x, y);
+    return barycentric(t, {x + 0.5f, y + 0.5f}, signed_area2(t));
+}
+
+// The whole image: {0, 0, width, height}.
+template <class Shade>
+bool rasterize(RasterMethod method, const ScreenTriangle& t, int width, int height, Shade&& shade) {
+    return rasterize(method, t, PixelRect{0, 0, width, height}, shade);
 }
 
 }  // namespace triangles

@@ -10,14 +10,16 @@ namespace triangles {
 
 // [doc:raster-bbox]
 template <class Shade>
-bool rasterize_bbox(const ScreenTriangle& t, int width, int height, Shade&& shade) {
+bool rasterize_bbox(const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;  // degenerate: covers nothing
-    const PixelRange xs = centres_between(std::min({t.v[0].x, t.v[1].x, t.v[2].x}),
-                                          std::max({t.v[0].x, t.v[1].x, t.v[2].x}), width);
-    const PixelRange ys = centres_between(std::min({t.v[0].y, t.v[1].y, t.v[2].y}),
-                                          std::max({t.v[0].y, t.v[1].y, t.v[2].y}), height);
+    const PixelRange xs =
+        centres_between(std::min({t.v[0].x, t.v[1].x, t.v[2].x}),
+                        std::max({t.v[0].x, t.v[1].x, t.v[2].x}), rect.x0, rect.x1);
+    const PixelRange ys =
+        centres_between(std::min({t.v[0].y, t.v[1].y, t.v[2].y}),
+                        std::max({t.v[0].y, t.v[1].y, t.v[2].y}), rect.y0, rect.y1);
     for (int y = ys.first; y <= ys.last; ++y)
         for (int x = xs.first; x <= xs.last; ++x) {
             const rl::vec2 p{x + 0.5f, y + 0.5f};
@@ -30,5 +32,11 @@ bool rasterize_bbox(const ScreenTriangle& t, int width, int height, Shade&& shad
     return true;
 }
 // [/doc:raster-bbox]
+
+// The whole image: {0, 0, width, height}.
+template <class Shade>
+bool rasterize_bbox(const ScreenTriangle& t, int width, int height, Shade&& shade) {
+    return rasterize_bbox(t, PixelRect{0, 0, width, height}, shade);
+}
 
 }  // namespace triangles

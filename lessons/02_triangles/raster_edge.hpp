@@ -36,7 +36,7 @@ inline bool is_top_left(FixedPoint a, FixedPoint b) {
 
 // [doc:raster-edge]
 template <class Shade>
-bool rasterize_edge(const ScreenTriangle& t, int width, int height, Shade&& shade) {
+bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
     if (!within_raster_range(t)) return false;  // |x|, |y| <= 2^22: the products fit 62 bits
     FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
     std::int64_t area =
@@ -55,10 +55,12 @@ bool rasterize_edge(const ScreenTriangle& t, int width, int height, Shade&& shad
     const auto to_pixels = [](std::int64_t fixed) {
         return static_cast<float>(fixed) / kSubpixels;
     };
-    const PixelRange xs = centres_between(to_pixels(std::min({v[0].x, v[1].x, v[2].x})),
-                                          to_pixels(std::max({v[0].x, v[1].x, v[2].x})), width);
-    const PixelRange ys = centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
-                                          to_pixels(std::max({v[0].y, v[1].y, v[2].y})), height);
+    const PixelRange xs =
+        centres_between(to_pixels(std::min({v[0].x, v[1].x, v[2].x})),
+                        to_pixels(std::max({v[0].x, v[1].x, v[2].x})), rect.x0, rect.x1);
+    const PixelRange ys =
+        centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
+                        to_pixels(std::max({v[0].y, v[1].y, v[2].y})), rect.y0, rect.y1);
     if (xs.first > xs.last || ys.first > ys.last) return true;
     const FixedPoint start{xs.first * kSubpixels + kSubpixels / 2,
                            ys.first * kSubpixels + kSubpixels / 2};
@@ -87,5 +89,38 @@ bool rasterize_edge(const ScreenTriangle& t, int width, int height, Shade&& shad
     return true;
 }
 // [/doc:raster-edge]
+
+// The weights rasterize_edge hands over at pixel (x, y), computed directly
+// (the same integers as its incremental steps, so the same floats): for a
+// caller that needs them at a pixel the rasterizer reached another way, as
+// lesson 05's pipeline does at a pixel centre when it rasterized a sample.
+inline rl::vec3 edge_weights_at(const ScreenTriangle& t, int x, int y) {
+    FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
+    std::int64_t area =
+        (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
+    int order[3] = {0, 1, 2};
+    if (area < 0) {
+        std::swap(v[1], v[2]);
+        std::swap(order[1], order[2]);
+        area = -area;
+    }
+    if (area == 0) return {};
+    const FixedPoint p{x * kSubpixels + kSubpixels / 2, y * kSubpixels + kSubpixels / 2};
+    const float inverse_area = 1.0f / static_cast<float>(area);
+    float weight[3];
+    for (int k = 0; k < 3; ++k) {
+        const FixedPoint a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+        weight[order[k]] =
+            static_cast<float>((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
+            inverse_area;
+    }
+    return {weight[0], weight[1], weight[2]};
+}
+
+// The whole image: {0, 0, width, height}.
+template <class Shade>
+bool rasterize_edge(const ScreenTriangle& t, int width, int height, Shade&& shade) {
+    return rasterize_edge(t, PixelRect{0, 0, width, height}, shade);
+}
 
 }  // namespace triangles

@@ -18,7 +18,7 @@ inline rl::vec3 barycentric(const ScreenTriangle& t, rl::vec2 p, float area) {
 
 // [doc:raster-scanline]
 template <class Shade>
-bool rasterize_scanline(const ScreenTriangle& t, int width, int height, Shade&& shade) {
+bool rasterize_scanline(const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;
@@ -34,13 +34,13 @@ bool rasterize_scanline(const ScreenTriangle& t, int width, int height, Shade&& 
     // Rows whose centres lie in [y0, y1): the lower part owns its bottom edge,
     // the upper part gets the row through the middle vertex.
     auto fill_rows = [&](float y0, float y1, rl::vec2 a, rl::vec2 b) {  // a-b: the short edge
-        const PixelRange rows = centres_between(y0, y1, height);
+        const PixelRange rows = centres_between(y0, y1, rect.y0, rect.y1);
         for (int y = rows.first; y <= rows.last; ++y) {
             const float yc = y + 0.5f;
             if (yc >= y1) break;  // half-open at the top
             float left = x_at(lo, hi, yc), right = x_at(a, b, yc);
             if (left > right) std::swap(left, right);
-            const PixelRange columns = centres_between(left, right, width);
+            const PixelRange columns = centres_between(left, right, rect.x0, rect.x1);
             for (int x = columns.first; x <= columns.last; ++x)
                 if (x + 0.5f < right)  // half-open at the right
                     shade(x, y, barycentric(t, {x + 0.5f, yc}, area));
@@ -51,5 +51,11 @@ bool rasterize_scanline(const ScreenTriangle& t, int width, int height, Shade&& 
     return true;
 }
 // [/doc:raster-scanline]
+
+// The whole image: {0, 0, width, height}.
+template <class Shade>
+bool rasterize_scanline(const ScreenTriangle& t, int width, int height, Shade&& shade) {
+    return rasterize_scanline(t, PixelRect{0, 0, width, height}, shade);
+}
 
 }  // namespace triangles

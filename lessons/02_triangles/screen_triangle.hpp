@@ -46,17 +46,30 @@ T interpolate(rl::vec3 weights, const T& a0, const T& a1, const T& a2) {
     return a0 * weights.x + a1 * weights.y + a2 * weights.z;
 }
 
+// The pixels a rasterizer may write: columns [x0, x1) and rows [y0, y1).
+// The whole image is {0, 0, width, height}; a tile is a smaller rectangle,
+// and drawing every tile of an image gives exactly the whole image's pixels.
+struct PixelRect {
+    int x0, y0, x1, y1;
+};
+
 // The range of pixel indices whose centres lie in [low, high], clamped to
-// [0, size - 1]; empty (first > last) when none do. Safe for any finite input.
+// [first, end - 1]; empty (first > last) when none do. Safe for any finite input.
 struct PixelRange {
     int first, last;
 };
 
-inline PixelRange centres_between(float low, float high, int size) {
+inline PixelRange centres_between(float low, float high, int first, int end) {
     // Centre i + 0.5 >= low  <=>  i >= low - 0.5; clamp in float before converting.
-    const float first = std::clamp(std::ceil(low - 0.5f), 0.0f, static_cast<float>(size));
-    const float last = std::clamp(std::floor(high - 0.5f), -1.0f, static_cast<float>(size - 1));
-    return {static_cast<int>(first), static_cast<int>(last)};
+    const float from =
+        std::clamp(std::ceil(low - 0.5f), static_cast<float>(first), static_cast<float>(end));
+    const float to = std::clamp(std::floor(high - 0.5f), static_cast<float>(first - 1),
+                                static_cast<float>(end - 1));
+    return {static_cast<int>(from), static_cast<int>(to)};
+}
+
+inline PixelRange centres_between(float low, float high, int size) {
+    return centres_between(low, high, 0, size);
 }
 
 }  // namespace triangles

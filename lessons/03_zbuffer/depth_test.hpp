@@ -6,7 +6,10 @@
 //   if (zbuffer::passes_depth_test(depth, x, y, z)) colour.at(x, y) = c;
 #pragma once
 
+#include "rasterlab/named_enum.hpp"
+
 #include <algorithm>
+#include <array>
 
 #include "02_triangles/screen_triangle.hpp"
 #include "rasterlab/image.hpp"
@@ -35,5 +38,52 @@ inline float interpolate_depth(rl::vec3 weights, float z0, float z1, float z2) {
 }
 
 // [/doc:depth-test]
+
+// The comparisons a depth attachment may use (OpenGL's glDepthFunc names):
+// `less` is this lesson's; `greater` with the buffer cleared to 0 is
+// reverse-Z, where the near plane maps to 1; `always` draws in order, as
+// with no depth test.
+enum class DepthCompare { less, less_equal, greater, greater_equal, always };
+inline constexpr std::array<rl::Named<DepthCompare>, 5> kDepthCompareNames = {
+    {{DepthCompare::less, "less"},
+     {DepthCompare::less_equal, "less-equal"},
+     {DepthCompare::greater, "greater"},
+     {DepthCompare::greater_equal, "greater-equal"},
+     {DepthCompare::always, "always"}}};
+inline const char* name(DepthCompare value) {
+    return rl::name_in(kDepthCompareNames, value);
+}
+
+// Whether a fragment at depth z passes against the stored depth. A NaN z
+// passes nothing but `always`.
+inline bool depth_passes(DepthCompare compare, float z, float stored) {
+    switch (compare) {
+        case DepthCompare::less:
+            return z < stored;
+        case DepthCompare::less_equal:
+            return z <= stored;
+        case DepthCompare::greater:
+            return z > stored;
+        case DepthCompare::greater_equal:
+            return z >= stored;
+        case DepthCompare::always:
+            return true;
+    }
+    return false;
+}
+
+// Everything a depth attachment does besides storing: how it compares,
+// whether a passing fragment writes its depth, what a clear stores, and the
+// bias added to every fragment's depth before the test: `constant` in depth
+// units plus `slope` times the triangle's steepest depth change per pixel,
+// max(|dz/dx|, |dz/dy|), as OpenGL's polygon offset (glPolygonOffset's
+// factor and units, with units in depth itself rather than in steps of a
+// fixed-point format). Lesson 08 uses the bias against shadow acne.
+struct DepthState {
+    DepthCompare compare = DepthCompare::less;
+    bool write = true;
+    float clear = 1.0f;
+    float constant_bias = 0.0f, slope_bias = 0.0f;
+};
 
 }  // namespace zbuffer

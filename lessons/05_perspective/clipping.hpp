@@ -13,29 +13,12 @@
 
 #include <array>
 #include <cmath>
-#include <concepts>
 
 #include "rasterlab/named_enum.hpp"
 #include "rasterlab/vec.hpp"
+#include "varyings.hpp"
 
 namespace perspective {
-
-// What the pipeline interpolates between vertices: anything with + and * float
-// (rl::vec2 texture coordinates, a struct of several, ...).
-template <class V>
-concept Varyings = std::default_initializable<V> && std::copyable<V> &&
-    requires(V a, V b, float s) {
-    { a + b } -> std::convertible_to<V>;
-    { a* s } -> std::convertible_to<V>;
-};
-
-// A vertex as the vertex stage hands it on: a clip-space position and the
-// attributes to interpolate.
-template <Varyings V>
-struct ClipVertex {
-    rl::vec4 position;
-    V varyings;
-};
 
 // Which planes a triangle is cut against:
 //   none        nothing: a vertex with w <= 0 lands on the wrong side of the
@@ -95,7 +78,8 @@ ClipPolygon<V> clip_against(const ClipPolygon<V>& in, ClipPlane plane) {
         if ((da >= 0) != (db >= 0)) {  // the edge crosses the plane
             const float t = da / (da - db);
             out.vertices[static_cast<std::size_t>(out.size++)] = {
-                a.position + (b.position - a.position) * t, a.varyings * (1 - t) + b.varyings * t};
+                a.position + (b.position - a.position) * t,
+                blend(a.varyings, 1 - t, b.varyings, t)};
         }
     }
     return out;

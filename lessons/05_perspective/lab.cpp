@@ -66,23 +66,12 @@ struct UvFrame {
 
 UvFrame draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera, int size,
                 Interpolation interpolation) {
-    UvFrame out{rl::Grid<rl::vec2>(size, size, rl::vec2{NAN, NAN})};
-    zbuffer::Frame frame(size, size);
-    const rl::mat4 vp = view_projection(camera, 1.0f);
+    WorldTarget target = world_target(size, size);
     PipelineOptions options;
     options.interpolation = interpolation;
-    const ClipPlanes planes = clip_planes(options.clip, size, size);
-    PipelineCounts counts;
-    auto pixel_stage = [&](const Fragment<rl::vec2>& f) {
-        out.uv.at(f.x, f.y) = f.varyings;
-        return rl::Rgba{};
-    };
-    for (std::size_t i = 0; i < scene.size(); ++i) {
-        draw_triangle(clip_vertices(scene[i], vp), planes, options, perspective::target_of(frame), pixel_stage,
-                      static_cast<int>(i), counts);
-    }
-    out.fragments = counts.fragments;
-    return out;
+    const PipelineCounts counts =
+        draw(WorldScene{&scene}, WorldProgram{view_projection(camera, 1.0f)}, target, options);
+    return {target.colour<1>(), counts.fragments};
 }
 
 // Mean and largest distance from the exact uv, in texels of a 256 x 256 texture.
@@ -255,9 +244,9 @@ RenderOptions lod_options(LodMethod lod, textures::Filter filter) {
 }
 
 rl::Image render_floor(const LodScene& s, LodMethod lod, textures::Filter filter) {
-    zbuffer::Frame frame(s.size, s.size);
+    perspective::ColourTarget frame = perspective::colour_target(s.size, s.size);
     render(s.models, s.camera, lod_options(lod, filter), frame);
-    return frame.colour;
+    return frame.colour();
 }
 
 void draw_lod_case(benchmark::State& state, const LodScene* s, LodMethod lod,
@@ -295,7 +284,7 @@ int main(int argc, char** argv) {
         std::vector<InterpolationCase> cases;
         for (double tilt : tilts)
             for (int size : sizes) {
-                cases.push_back({"perspective", Interpolation::perspective, 1, tilt, size,
+                cases.push_back({"perspective", Interpolation::perspective_correct, 1, tilt, size,
                                  tilted_quad(tilt, 1)});
                 for (int n : cells)
                     cases.push_back({n == 1 ? "affine"

@@ -48,10 +48,10 @@ int main(int argc, char** argv) {
         const perspective::Camera camera =
             perspective::resolve_camera(view, perspective::scene_bounds(models), aspect);
 
-        zbuffer::Frame frame(width, height);
+        perspective::ColourTarget frame = perspective::colour_target(width, height);
         const perspective::PipelineCounts counts =
             perspective::render(models, camera, options, frame);
-        rl::save_image(output, frame.colour);
+        rl::save_image(output, frame.colour());
         std::printf(
             "%zu models (%zu culled by their boxes): %zu faces, %zu back faces, %zu clipped, "
             "%zu outside, %zu triangles drawn, %zu refused, %zu fragments shaded; eye (%g, %g, "

@@ -1,79 +1,77 @@
-// The pipeline every drawing lesson from here on goes through, in the order a
+// The pipeline every drawing lesson from 05 on goes through, in the order a
 // GPU runs it:
 //
-//   vertex stage -> clip space -> back-face cull -> clip -> divide by w
-//     -> viewport -> rasterizer (lesson 02) -> early depth test (lesson 03)
-//     -> per-pixel stage -> colour
+//   vertex stage -> back-face cull -> clip -> divide and viewport
+//     -> rasterize (lesson 02) -> depth test (lesson 03) -> fragment stage -> store
 //
-// A lesson supplies two functions: the vertex stage turns one corner of a
-// face into a clip-space position and the attributes ("varyings") to carry
-// to the pixels; the per-pixel stage turns a Fragment (the interpolated
-// varyings, their screen derivatives on request) into a colour. Everything
-// between is here, once, and every drawing lesson from 05 on goes through
-// it (lessons 02-04 drew through lesson 02's shorter loop, draw_faces.hpp).
+// A lesson hands draw() three things: the geometry (a MeshView, or any type
+// with face_count() and corner(face, k)), a program, and a render target. A
+// program is a type with a vertex function (one corner in; a clip-space
+// position, the varyings to interpolate and, optionally, flat values out) and
+// a fragment function (the interpolated varyings at one pixel in; one value
+// per colour attachment of the target out). Everything between is here, once
+// (lessons 02-04 drew through lesson 02's shorter loop, draw_faces.hpp).
 // Derivations: docs/05_perspective.md.
 //
-//   const rl::mat4 mvp = perspective::view_projection(camera, aspect) * model;
-//   perspective::draw_mesh<rl::vec2>(
-//       mesh, {frame.colour, &frame.depth}, options,
-//       [&](const rl::Face& face, int corner) {   // vertex stage
-//           return perspective::ClipVertex<rl::vec2>{
-//               mvp * rl::extend(mesh.position(face, corner), 1.0f), uv_of(face, corner)};
-//       },
-//       [&](const perspective::Fragment<rl::vec2>& f) {  // per-pixel stage
-//           return colour_at(f.varyings, f.d_dx(), f.d_dy());
-//       });
+//   struct TexturedProgram {
+//       rl::mat4 mvp; const textures::MipChain& texture;
+//       using Varyings = rl::vec2;                     // texture coordinates
+//       perspective::ClipVertex<rl::vec2> vertex(const perspective::MeshCorner& c) const {
+//           return {mvp * rl::extend(c.position(), 1.0f), c.uv()};
+//       }
+//       rl::Rgba fragment(const perspective::Fragment<rl::vec2>& f) const {
+//           return textures::to_rgba(textures::sample(texture, f.varyings, {f.d_dx(), f.d_dy()},
+//           {}));
+//       }
+//   };
+//   perspective::ColourTarget frame = perspective::colour_target(800, 600);
+//   perspective::draw(perspective::MeshView(mesh, model), TexturedProgram{mvp, chain}, frame);
 #pragma once
 
 #include "rasterlab/named_enum.hpp"
 
 #include <array>
+#include <concepts>
 #include <cstddef>
 #include <optional>
+#include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include "02_triangles/raster.hpp"
 #include "03_zbuffer/depth_test.hpp"
-#include "03_zbuffer/hidden_surfaces.hpp"
 #include "camera.hpp"
 #include "clipping.hpp"
 #include "rasterlab/mesh.hpp"
 #include "rasterlab/transform.hpp"
+#include "render_target.hpp"
+#include "varyings.hpp"
 
 namespace perspective {
 
 // How varyings are interpolated between a triangle's vertices: linearly in
 // the window (what lessons 02-04 did; wrong under perspective) or linearly
-// in the surface, by interpolating varyings / w and 1 / w and dividing.
-enum class Interpolation { affine, perspective };
+// on the surface, by interpolating varyings / w and 1 / w and dividing.
+enum class Interpolation { affine, perspective_correct };
 inline constexpr std::array<rl::Named<Interpolation>, 2> kInterpolationNames = {
-    {{Interpolation::affine, "affine"}, {Interpolation::perspective, "perspective"}}};
+    {{Interpolation::affine, "affine"}, {Interpolation::perspective_correct, "perspective"}}};
 inline constexpr std::array<Interpolation, 2> kInterpolations = rl::values_of(kInterpolationNames);
 inline const char* name(Interpolation value) {
     return rl::name_in(kInterpolationNames, value);
 }
 
+// What a draw may change; the defaults are what the lessons teach, the rest
+// is for the lab to compare.
 struct PipelineOptions {
     ClipMode clip = ClipMode::guard_band;
-    Interpolation interpolation = Interpolation::perspective;
+    Interpolation interpolation = Interpolation::perspective_correct;
     bool cull_back_faces = true;
-    bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
     triangles::RasterMethod raster = triangles::RasterMethod::edge;  // lesson 02's three
+    std::optional<triangles::PixelRect> tile;  // draw only these pixels (default: all)
 };
 
-// Where the pipeline draws: a colour image and a depth image of the same
-// size for the depth test, or none (the last triangle drawn wins, as in
-// lesson 02).
-struct RenderTarget {
-    rl::Image& colour;
-    rl::FloatImage* depth = nullptr;
-};
-
-inline RenderTarget target_of(zbuffer::Frame& frame) {
-    return {frame.colour, &frame.depth};
-}
-
-// What became of the work: every count the lab reports.
+// What became of the work: every count the lab reports. Counts of separate
+// draws (models, tiles) add up with +=.
 struct PipelineCounts {
     std::size_t objects_culled = 0;  // models skipped whole by their bounding box
     std::size_t faces = 0;           // faces that reached the vertex stage
@@ -82,13 +80,69 @@ struct PipelineCounts {
     std::size_t clipped = 0;         // cut by at least one plane
     std::size_t drawn = 0;           // triangles rasterized (a clipped face may give several)
     std::size_t refused = 0;         // refused by the rasterizer (beyond 2^22 pixels, NaN)
-    std::size_t fragments = 0;       // pixels that passed the depth test and were shaded
+    std::size_t fragments = 0;       // samples that passed the depth test and were stored
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
 
-// The per-triangle constants the per-pixel step needs, computed once after
-// the viewport transform (the "triangle setup" of a GPU).
-template <Varyings V>
+// One corner of a mesh face, its attributes read on request.
+struct MeshCorner {
+    const rl::Mesh* mesh;
+    int face, corner;
+    const rl::Face& mesh_face() const { return mesh->faces[static_cast<std::size_t>(face)]; }
+    rl::vec3 position() const { return mesh->position(mesh_face(), corner); }
+    rl::vec2 uv() const {  // (0, 0) where the OBJ gives none
+        const int t = mesh_face().corners[static_cast<std::size_t>(corner)].uv;
+        return t >= 0 ? mesh->uvs[static_cast<std::size_t>(t)] : rl::vec2{};
+    }
+};
+
+// A mesh as the pipeline reads it. A model matrix that mirrors (negative
+// determinant) turns every face clockwise on screen; the view then hands the
+// corners over in the order 0, 2, 1 so that front faces stay
+// counter-clockwise. This is the one place mirroring is decided.
+struct MeshView {
+    const rl::Mesh* mesh;
+    bool mirrored = false;
+    MeshView(const rl::Mesh& m, const rl::mat4& model = rl::mat4::identity())
+        : mesh(&m), mirrored(rl::determinant(rl::linear_part(model)) < 0) {}
+    int face_count() const { return static_cast<int>(mesh->faces.size()); }
+    MeshCorner corner(int face, int k) const { return {mesh, face, mirrored ? (3 - k) % 3 : k}; }
+};
+
+// A program's flat values (not interpolated: every pixel of a triangle gets
+// those of the face's first vertex, its "provoking vertex" as Direct3D and
+// Vulkan choose it; OpenGL's default is the last), and whether its fragment
+// stage may discard a pixel. Both are declared by the program: `using Flat
+// = ...;` and `static constexpr bool may_discard = true;` (then fragment()
+// returns std::optional); a program that declares neither has neither.
+template <class P>
+struct ProgramTraits {
+    static constexpr auto flat() {
+        if constexpr (requires { typename P::Flat; })
+            return std::type_identity<typename P::Flat>{};
+        else
+            return std::type_identity<NoFlat>{};
+    }
+    using Flat = typename decltype(flat())::type;
+    static constexpr bool may_discard = [] {
+        if constexpr (requires { P::may_discard; })
+            return static_cast<bool>(P::may_discard);
+        else
+            return false;
+    }();
+};
+template <class P>
+using FlatOf = typename ProgramTraits<P>::Flat;
+
+template <class P, class Corner>
+concept Program = Varyings<typename P::Varyings> && requires(const P& p, const Corner& c) {
+    { p.vertex(c) } -> std::same_as<ClipVertex<typename P::Varyings, FlatOf<P>>>;
+};
+
+// [doc:triangle-setup]
+// The per-triangle constants the per-pixel work needs, computed once after
+// the divide and the viewport (a GPU's "triangle setup").
+template <Varyings V, class F = NoFlat>
 struct TriangleSetup {
     rl::vec3 window[3];  // x, y in pixels, z the window depth in [0, 1]
     V vertex[3];         // the varyings at the three vertices
@@ -97,28 +151,84 @@ struct TriangleSetup {
     V over_w[3];                 // varyings / w
     V d_over_w_dx, d_over_w_dy;  // screen derivatives of sum(b_i varyings_i / w_i) ...
     float d_inverse_w_dx = 0, d_inverse_w_dy = 0;  // ... and of sum(b_i / w_i)
-    int face = 0;                                  // the mesh face it came from
+    float depth_slope = 0;                         // max(|dz/dx|, |dz/dy|), for the slope bias
+    [[no_unique_address]] F flat{};
+    int face = 0;  // the face it came from
+    triangles::ScreenTriangle screen(rl::vec2 offset = {}) const {
+        return {{window[0].xy() - offset, window[1].xy() - offset, window[2].xy() - offset}};
+    }
 };
 
-// One pixel reaching the per-pixel stage.
-template <Varyings V>
+// Divide, viewport, and the constants of one triangle of clip-space vertices.
+template <Varyings V, class F>
+TriangleSetup<V, F> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c,
+                           const F& flat, int face, Interpolation interpolation, int width,
+                           int height) {
+    TriangleSetup<V, F> t;
+    const ClipVertex<V>* v[3] = {&a, &b, &c};
+    t.perspective_correct = interpolation == Interpolation::perspective_correct;
+    for (int k = 0; k < 3; ++k) {
+        const rl::vec4& p = v[k]->position;
+        const float inverse_w = 1 / p.w;
+        t.window[k] = rl::ndc_to_window(p.xyz() * inverse_w, width, height);
+        t.vertex[k] = v[k]->varyings;
+        t.inverse_w[k] = t.perspective_correct ? inverse_w : 1.0f;
+        t.over_w[k] = scaled(t.vertex[k], t.inverse_w[k]);
+    }
+    // The barycentric weight b_k is linear on screen: b_k = E_k / (2 area),
+    // where E_k is the edge function of the edge opposite vertex k, so
+    // db_k/dx = -(y_j - y_i) / (2 area) and db_k/dy = (x_j - x_i) / (2 area).
+    const float area2 = triangles::signed_area2(t.screen());
+    const float inverse_area2 = area2 != 0 ? 1 / area2 : 0.0f;
+    float dz_dx = 0, dz_dy = 0;
+    for (int k = 0; k < 3; ++k) {
+        const rl::vec3 &i = t.window[(k + 1) % 3], &j = t.window[(k + 2) % 3];
+        const float db_dx = (i.y - j.y) * inverse_area2, db_dy = (j.x - i.x) * inverse_area2;
+        t.d_over_w_dx = blend(t.d_over_w_dx, 1.0f, t.over_w[k], db_dx);
+        t.d_over_w_dy = blend(t.d_over_w_dy, 1.0f, t.over_w[k], db_dy);
+        t.d_inverse_w_dx += t.inverse_w[k] * db_dx;
+        t.d_inverse_w_dy += t.inverse_w[k] * db_dy;
+        dz_dx += t.window[k].z * db_dx, dz_dy += t.window[k].z * db_dy;
+    }
+    t.depth_slope = std::max(std::abs(dz_dx), std::abs(dz_dy));
+    t.flat = flat;
+    t.face = face;
+    return t;
+}
+// [/doc:triangle-setup]
+
+// One pixel (one sample of it) reaching the fragment stage.
+template <Varyings V, class F = NoFlat>
 struct Fragment {
     int x, y;
     float depth;
     V varyings;
     float inverse_w;  // interpolated 1 / w at this pixel
-    const TriangleSetup<V>* triangle;
+    const TriangleSetup<V, F>* triangle;
     int face() const { return triangle->face; }
+    const F& flat() const { return triangle->flat; }
     // How the varyings change per pixel to the right (d_dx) and up (d_dy):
     // exact for either interpolation, from the quotient rule on
     // varyings = (varyings / w) / (1 / w), both of which are linear on screen.
     V d_dx() const {
-        return (triangle->d_over_w_dx + varyings * -triangle->d_inverse_w_dx) * (1 / inverse_w);
+        return scaled(blend(triangle->d_over_w_dx, 1.0f, varyings, -triangle->d_inverse_w_dx),
+                      1 / inverse_w);
     }
     V d_dy() const {
-        return (triangle->d_over_w_dy + varyings * -triangle->d_inverse_w_dy) * (1 / inverse_w);
+        return scaled(blend(triangle->d_over_w_dy, 1.0f, varyings, -triangle->d_inverse_w_dy),
+                      1 / inverse_w);
     }
 };
+
+// The fragment at barycentric weights b: perspective-correct varyings are
+// b . (varyings / w) divided by b . (1 / w); affine ones are b . varyings.
+template <Varyings V, class F>
+Fragment<V, F> fragment_at(const TriangleSetup<V, F>& t, int x, int y, float z, rl::vec3 b) {
+    const V over_w = weighted(t.over_w, b);
+    if (!t.perspective_correct) return {x, y, z, over_w, 1.0f, &t};
+    const float inverse_w = b.x * t.inverse_w[0] + b.y * t.inverse_w[1] + b.z * t.inverse_w[2];
+    return {x, y, z, scaled(over_w, 1 / inverse_w), inverse_w, &t};
+}
 
 // Back-face test in clip space, before the divide: the sign of det[x y w]
 // is the sign of the volume of the tetrahedron (eye, v0, v1, v2), so it says
@@ -133,153 +243,123 @@ inline float facing(const rl::vec4& a, const rl::vec4& b, const rl::vec4& c) {
 // frustum of `model_view_projection`: then nothing in it can be seen.
 bool outside_frustum(const Box& box, const rl::mat4& model_view_projection);
 
-// [doc:triangle-setup]
-// Divide, viewport, and the constants of the per-pixel step for one triangle
-// of clip-space vertices.
-template <Varyings V>
-TriangleSetup<V> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c,
-                        Interpolation interpolation, int width, int height, int face) {
-    TriangleSetup<V> t;
-    const ClipVertex<V>* v[3] = {&a, &b, &c};
-    for (int k = 0; k < 3; ++k) {
-        const rl::vec4& p = v[k]->position;
-        const float inverse_w = 1 / p.w;
-        t.window[k] = rl::ndc_to_window(p.xyz() * inverse_w, width, height);
-        t.vertex[k] = v[k]->varyings;
-        t.inverse_w[k] = interpolation == Interpolation::perspective ? inverse_w : 1.0f;
-        t.over_w[k] = t.vertex[k] * t.inverse_w[k];
-    }
-    t.perspective_correct = interpolation == Interpolation::perspective;
-    // The barycentric weight b_k is linear on screen: b_k = E_k / (2 area),
-    // where E_k is the edge function of the edge opposite vertex k, so
-    // db_k/dx = -(y_j - y_i) / (2 area) and db_k/dy = (x_j - x_i) / (2 area).
-    const float area2 =
-        triangles::signed_area2({{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}});
-    const float inverse_area2 = area2 != 0 ? 1 / area2 : 0.0f;
-    for (int k = 0; k < 3; ++k) {
-        const rl::vec3 &i = t.window[(k + 1) % 3], &j = t.window[(k + 2) % 3];
-        const float db_dx = (i.y - j.y) * inverse_area2, db_dy = (j.x - i.x) * inverse_area2;
-        t.d_over_w_dx = t.d_over_w_dx + t.over_w[k] * db_dx;
-        t.d_over_w_dy = t.d_over_w_dy + t.over_w[k] * db_dy;
-        t.d_inverse_w_dx += t.inverse_w[k] * db_dx;
-        t.d_inverse_w_dy += t.inverse_w[k] * db_dy;
-    }
-    t.face = face;
-    return t;
-}
-// [/doc:triangle-setup]
-
-template <class T>
-inline constexpr bool kIsOptional = false;
-template <class T>
-inline constexpr bool kIsOptional<std::optional<T>> = true;
-
-// [doc:draw-setup]
-// Rasterizes one set-up triangle: lesson 02's rasterizer, lesson 03's depth
-// test (window depth is linear on screen, so it is interpolated with the
-// plain weights), then the varyings, then the per-pixel stage. Under
-// perspective the varyings are b . (varyings / w) divided by b . (1 / w);
-// affine interpolation is b . varyings. The depth test runs before the
-// per-pixel stage (early) unless that stage may discard the pixel (it
-// returns std::optional): then the stage runs on pixels that would pass, and
-// only a pixel it keeps writes its depth (late). Returns false if refused.
-template <Varyings V, class PixelStage>
-bool rasterize_setup(const TriangleSetup<V>& t, RenderTarget target, triangles::RasterMethod method,
-                     PixelStage& pixel_stage, std::size_t& fragments) {
-    using Result = std::invoke_result_t<PixelStage&, const Fragment<V>&>;
-    constexpr bool late_depth = kIsOptional<Result>;
-    const triangles::ScreenTriangle screen{{t.window[0].xy(), t.window[1].xy(), t.window[2].xy()}};
-    const int width = target.colour.width(), height = target.colour.height();
-    return triangles::rasterize(method, screen, width, height, [&](int x, int y, rl::vec3 b) {
-        const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
-        if constexpr (late_depth) {
-            if (target.depth && !(z < target.depth->at(x, y))) return;
-        } else {
-            if (target.depth && !zbuffer::passes_depth_test(*target.depth, x, y, z)) return;
-        }
-        const V over_w = t.over_w[0] * b.x + t.over_w[1] * b.y + t.over_w[2] * b.z;
-        float inverse_w = 1;
-        V varyings = over_w;
-        if (t.perspective_correct) {
-            inverse_w = b.x * t.inverse_w[0] + b.y * t.inverse_w[1] + b.z * t.inverse_w[2];
-            varyings = over_w * (1 / inverse_w);
-        }
-        const Fragment<V> fragment{x, y, z, varyings, inverse_w, &t};
-        if constexpr (late_depth) {
-            const Result kept = pixel_stage(fragment);
-            if (!kept) return;  // discarded: neither colour nor depth
-            if (target.depth) target.depth->at(x, y) = z;
-            target.colour.at(x, y) = *kept;
-        } else {
-            target.colour.at(x, y) = pixel_stage(fragment);
-        }
-        ++fragments;
-    });
-}
-// [/doc:draw-setup]
-
-// [doc:assemble-triangle]
-// One face from clip space to window space: back-face cull, clip (a face
-// may become a fan of up to 7 triangles), divide and viewport. Calls
-// emit(TriangleSetup) for each triangle to rasterize.
-template <Varyings V, class Emit>
-void assemble_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& planes,
-                       const PipelineOptions& options, int width, int height, int face,
-                       PipelineCounts& counts, Emit&& emit) {
-    ++counts.faces;
-    // Not "culled unless > 0": a face whose sign is NaN goes on, for the
-    // rasterizer to refuse and count.
-    if (options.cull_back_faces && facing(v[0].position, v[1].position, v[2].position) <= 0) {
-        ++counts.back_faces;
-        return;
-    }
+// The face cut against the planes (most faces need no cut and are copied as
+// they are); counts what was cut and what was wholly outside.
+template <Varyings V, class F>
+ClipPolygon<V> clip_face(const std::array<ClipVertex<V, F>, 3>& v, const ClipPlanes& planes,
+                         PipelineCounts& counts) {
+    const std::array<ClipVertex<V>, 3> corners = {ClipVertex<V>{v[0].position, v[0].varyings},
+                                                  ClipVertex<V>{v[1].position, v[1].varyings},
+                                                  ClipVertex<V>{v[2].position, v[2].varyings}};
     const rl::vec4 positions[3] = {v[0].position, v[1].position, v[2].position};
-    if (inside_all(planes, positions))
-        return emit(set_up(v[0], v[1], v[2], options.interpolation, width, height, face));
-    const ClipPolygon<V> polygon = clip_triangle(v, planes);
-    if (polygon.size < 3) {
-        ++counts.outside;
-        return;
+    if (inside_all(planes, positions)) return {{corners[0], corners[1], corners[2]}, 3};
+    const ClipPolygon<V> polygon = clip_triangle(corners, planes);
+    ++(polygon.size < 3 ? counts.outside : counts.clipped);
+    return polygon;
+}
+
+// Writes a fragment's outputs into the target's colour attachments: one
+// value for a target of one attachment, a tuple in attachment order for several.
+template <class Outputs, class... Pixels>
+void store(RenderTarget<Pixels...>& target, int column, int y, const Outputs& out) {
+    if constexpr (sizeof...(Pixels) == 1) {
+        target.template colour<0>().at(column, y) = out;
+    } else {
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((target.template colour<I>().at(column, y) = std::get<I>(out)), ...);
+        }
+        (std::index_sequence_for<Pixels...>{});
     }
-    ++counts.clipped;
-    for (int i = 1; i + 1 < polygon.size; ++i)  // a convex polygon as a fan of triangles
-        emit(set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
-                    polygon.vertices[static_cast<std::size_t>(i + 1)], options.interpolation, width,
-                    height, face));
-}
-// [/doc:assemble-triangle]
-
-// One face through every stage after the vertex stage.
-template <Varyings V, class PixelStage>
-void draw_triangle(const std::array<ClipVertex<V>, 3>& v, const ClipPlanes& planes,
-                   const PipelineOptions& options, RenderTarget target, PixelStage& pixel_stage,
-                   int face, PipelineCounts& counts) {
-    assemble_triangle(v, planes, options, target.colour.width(), target.colour.height(), face,
-                      counts, [&](const TriangleSetup<V>& t) {
-                          const bool ok = rasterize_setup(t, target, options.raster, pixel_stage,
-                                                          counts.fragments);
-                          ++(ok ? counts.drawn : counts.refused);
-                      });
 }
 
-// [doc:draw-mesh]
-// Every face of a mesh: vertex_stage(face, corner) -> ClipVertex<V> for
-// each corner, then draw_triangle. The caller does the object-level culling
-// (outside_frustum), since only it knows the model's box.
-template <Varyings V, class VertexStage, class PixelStage>
-PipelineCounts draw_mesh(const rl::Mesh& mesh, RenderTarget target, const PipelineOptions& options,
-                         VertexStage&& vertex_stage, PixelStage&& pixel_stage) {
+// [doc:rasterize-triangle]
+// Rasterizes one set-up triangle once per sample of the target (the
+// triangle moved by minus the sample's offset, so that the rasterizer's
+// pixel-centre test tests the sample), then per covered sample: depth
+// (interpolated with the plain weights, as window depth is linear on screen;
+// biased; compared), the fragment stage (with the varyings at the pixel's
+// centre, so every sample of a pixel shades alike), and the store. The depth
+// test runs before the fragment stage, unless the program may discard: then
+// only a fragment it keeps writes depth. Returns false if refused.
+template <class P, Varyings V, class F, class... Pixels>
+bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
+                        RenderTarget<Pixels...>& target, const PipelineOptions& options,
+                        std::size_t& fragments) {
+    constexpr bool has_colour = sizeof...(Pixels) > 0, discards = ProgramTraits<P>::may_discard;
+    rl::FloatImage* const depth = target.depth();
+    const zbuffer::DepthState& state = target.depth_state;
+    const float bias = state.constant_bias + state.slope_bias * t.depth_slope;
+    const int samples = target.samples();
+    const triangles::PixelRect rect =
+        options.tile.value_or(triangles::PixelRect{0, 0, target.width(), target.height()});
+    bool ok = true;
+    for (int s = 0; s < samples; ++s) {
+        const rl::vec2 offset = sample_offset(samples, s);
+        ok &= triangles::rasterize(
+            options.raster, t.screen(offset), rect, [&](int x, int y, rl::vec3 b) {
+                const int column = x * samples + s;
+                float z =
+                    zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
+                if (bias != 0) z = std::clamp(z + bias, 0.0f, 1.0f);
+                if (depth && !zbuffer::depth_passes(state.compare, z, depth->at(column, y))) return;
+                if constexpr (!discards) {
+                    if (depth && state.write) depth->at(column, y) = z;
+                }
+                if constexpr (has_colour || discards) {
+                    const rl::vec3 centre =
+                        samples == 1 ? b : triangles::weights_at(options.raster, t.screen(), x, y);
+                    const Fragment<V, F> fragment = fragment_at(t, x, y, z, centre);
+                    if constexpr (discards) {
+                        const auto kept = program.fragment(fragment);
+                        if (!kept) return;  // discarded: neither colour nor depth
+                        if (depth && state.write) depth->at(column, y) = z;
+                        if constexpr (has_colour) store(target, column, y, *kept);
+                    } else {
+                        store(target, column, y, program.fragment(fragment));
+                    }
+                }
+                ++fragments;
+            });
+    }
+    return ok;
+}
+// [/doc:rasterize-triangle]
+
+// [doc:draw]
+// Every face of the geometry through every stage, into the target.
+template <class Geometry, class P, class... Pixels>
+PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pixels...>& target,
+                    const PipelineOptions& options = {}) {
+    using V = typename P::Varyings;
+    const ClipPlanes planes = clip_planes(options.clip, target.width(), target.height());
     PipelineCounts counts;
-    const ClipPlanes planes =
-        clip_planes(options.clip, target.colour.width(), target.colour.height());
-    int index = 0;
-    for (const rl::Face& face : mesh.faces) {
-        const std::array<ClipVertex<V>, 3> v = {vertex_stage(face, 0), vertex_stage(face, 1),
-                                                vertex_stage(face, 2)};
-        draw_triangle(v, planes, options, target, pixel_stage, index++, counts);
+    for (int face = 0; face < geometry.face_count(); ++face) {
+        ++counts.faces;
+        // 1. The vertex stage: each corner to clip space, with its varyings.
+        const std::array<ClipVertex<V, FlatOf<P>>, 3> v = {
+            program.vertex(geometry.corner(face, 0)), program.vertex(geometry.corner(face, 1)),
+            program.vertex(geometry.corner(face, 2))};
+        // 2. Back faces culled by the sign of det[x y w]. Not "culled unless
+        // > 0": a face whose sign is NaN goes on, for the rasterizer to refuse.
+        if (options.cull_back_faces && facing(v[0].position, v[1].position, v[2].position) <= 0) {
+            ++counts.back_faces;
+            continue;
+        }
+        // 3. Clipping: the face becomes a convex polygon, drawn as a fan.
+        const ClipPolygon<V> polygon = clip_face(v, planes, counts);
+        for (int i = 1; i + 1 < polygon.size; ++i) {
+            // 4. Divide and viewport; the flat values come from the first vertex.
+            const TriangleSetup<V, FlatOf<P>> t =
+                set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
+                       polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
+                       options.interpolation, target.width(), target.height());
+            // 5.-8. Rasterize, depth test, fragment stage, store.
+            const bool ok = rasterize_triangle(t, program, target, options, counts.fragments);
+            ++(ok ? counts.drawn : counts.refused);
+        }
     }
     return counts;
 }
-// [/doc:draw-mesh]
+// [/doc:draw]
 
 }  // namespace perspective

@@ -71,32 +71,18 @@ rl::Grid<int> exact_ids(const std::vector<WorldTriangle>& scene, const RayCamera
     return ids;
 }
 
-std::array<ClipVertex<rl::vec2>, 3> clip_vertices(const WorldTriangle& t,
-                                                  const rl::mat4& view_projection) {
-    std::array<ClipVertex<rl::vec2>, 3> v;
-    for (std::size_t k = 0; k < 3; ++k)
-        v[k] = {view_projection * rl::extend(rl::cast<float>(t.p[k]), 1.0f),
-                rl::cast<float>(t.uv[k])};
-    return v;
+WorldTarget world_target(int width, int height) {
+    return WorldTarget(width, height, {}, -1, rl::vec2{NAN, NAN});
 }
 
 rl::Grid<int> pipeline_ids(const std::vector<WorldTriangle>& scene, const Camera& camera, int width,
                            int height, const PipelineOptions& options, PipelineCounts* counts) {
-    zbuffer::Frame frame(width, height);
+    WorldTarget target = world_target(width, height);
     const rl::mat4 vp =
         view_projection(camera, static_cast<float>(width) / static_cast<float>(height));
-    const ClipPlanes planes = clip_planes(options.clip, width, height);
-    PipelineCounts local;
-    auto pixel_stage = [&](const Fragment<rl::vec2>& f) {
-        frame.ids.at(f.x, f.y) = f.face();
-        return rl::Rgba{};
-    };
-    for (std::size_t i = 0; i < scene.size(); ++i) {
-        draw_triangle(clip_vertices(scene[i], vp), planes, options, perspective::target_of(frame), pixel_stage,
-                      static_cast<int>(i), local);
-    }
+    const PipelineCounts local = draw(WorldScene{&scene}, WorldProgram{vp}, target, options);
     if (counts) *counts += local;
-    return frame.ids;
+    return target.colour<0>();
 }
 
 IdDifference compare_ids(const rl::Grid<int>& truth, const rl::Grid<int>& ids) {

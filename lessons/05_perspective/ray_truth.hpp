@@ -52,10 +52,35 @@ std::optional<Hit> intersect(const WorldTriangle& t, rl::dvec3 eye, rl::dvec3 di
 // between the near and far planes, or -1.
 rl::Grid<int> exact_ids(const std::vector<WorldTriangle>& scene, const RayCamera& rays);
 
-// A world triangle's corners for the pipeline: clip positions by the
-// view-projection matrix, texture coordinates as the varyings.
-std::array<ClipVertex<rl::vec2>, 3> clip_vertices(const WorldTriangle& t,
-                                                  const rl::mat4& view_projection);
+// World triangles as the pipeline's geometry ...
+struct WorldCorner {
+    const WorldTriangle* triangle;
+    int corner;
+};
+struct WorldScene {
+    const std::vector<WorldTriangle>* scene;
+    int face_count() const { return static_cast<int>(scene->size()); }
+    WorldCorner corner(int face, int k) const {
+        return {&(*scene)[static_cast<std::size_t>(face)], k};
+    }
+};
+
+// ... and the program that draws them into a target of two attachments:
+// which triangle each pixel shows, and its texture coordinates there.
+struct WorldProgram {
+    rl::mat4 view_projection;
+    using Varyings = rl::vec2;
+    ClipVertex<rl::vec2> vertex(const WorldCorner& c) const {
+        const auto k = static_cast<std::size_t>(c.corner);
+        return {view_projection * rl::extend(rl::cast<float>(c.triangle->p[k]), 1.0f),
+                rl::cast<float>(c.triangle->uv[k])};
+    }
+    std::tuple<int, rl::vec2> fragment(const Fragment<rl::vec2>& f) const {
+        return {f.face(), f.varyings};
+    }
+};
+using WorldTarget = RenderTarget<int, rl::vec2>;  // ids (-1: none), uv (NaN: none)
+WorldTarget world_target(int width, int height);
 
 // The scene drawn through the pipeline with the given options, each pixel
 // holding the index of the triangle it shows (-1 for none).

@@ -42,11 +42,6 @@ Box scene_bounds(const std::vector<Model>& models) {
 
 namespace {
 
-rl::vec2 uv_of(const rl::Mesh& mesh, const rl::Face& face, int corner) {
-    const int t = face.corners[static_cast<std::size_t>(corner)].uv;
-    return t >= 0 ? mesh.uvs[static_cast<std::size_t>(t)] : rl::vec2{};
-}
-
 // Lesson 02's flat Lambert term of every face, in world space.
 std::vector<float> face_light(const Model& model, const RenderOptions& options) {
     std::vector<float> light(model.mesh.faces.size(), 1.0f);
@@ -72,36 +67,34 @@ textures::UvDerivatives affine_derivatives(const TriangleSetup<rl::vec2>& t) {
 
 }  // namespace
 
+// [doc:textured-program]
+rl::Rgba TexturedProgram::fragment(const Fragment<rl::vec2>& f) const {
+    // Each pixel's own derivatives, or lesson 04's affine estimate from the
+    // triangle's corners (the same for the whole triangle).
+    const textures::UvDerivatives d = lod == LodMethod::pixel
+                                          ? textures::UvDerivatives{f.d_dx(), f.d_dy()}
+                                          : affine_derivatives(*f.triangle);
+    const rl::vec4 c = textures::sample(texture, f.varyings, d, sampler);
+    const float shade = light[static_cast<std::size_t>(f.face())];
+    return textures::to_rgba({c.x * shade, c.y * shade, c.z * shade, 1.0f});
+}
+// [/doc:textured-program]
+
 // [doc:render-model]
 PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
-                      const RenderOptions& options, zbuffer::Frame& frame) {
-    const int width = frame.colour.width(), height = frame.colour.height();
-    const rl::mat4 view_proj =
-        view_projection(camera, static_cast<float>(width) / static_cast<float>(height));
+                      const RenderOptions& options, ColourTarget& frame) {
+    const rl::mat4 view_proj = view_projection(
+        camera, static_cast<float>(frame.width()) / static_cast<float>(frame.height()));
     PipelineCounts counts;
     for (const Model& model : models) {
         const rl::mat4 mvp = view_proj * model.transform;
-        if (options.pipeline.cull_objects && outside_frustum(model.box, mvp)) {
+        if (options.cull_objects && outside_frustum(model.box, mvp)) {
             ++counts.objects_culled;
             continue;
         }
         const std::vector<float> light = face_light(model, options);
-        const auto vertex_stage = [&](const rl::Face& face, int corner) {
-            return ClipVertex<rl::vec2>{mvp * rl::extend(model.mesh.position(face, corner), 1.0f),
-                                        uv_of(model.mesh, face, corner)};
-        };
-        const auto pixel_stage = [&](const Fragment<rl::vec2>& f) {
-            // Each pixel's own derivatives, or lesson 04's affine estimate
-            // from the triangle's corners (the same for the whole triangle).
-            const textures::UvDerivatives d = options.lod == LodMethod::pixel
-                                                  ? textures::UvDerivatives{f.d_dx(), f.d_dy()}
-                                                  : affine_derivatives(*f.triangle);
-            const rl::vec4 c = textures::sample(model.texture, f.varyings, d, options.sampler);
-            const float shade = light[static_cast<std::size_t>(f.face())];
-            return textures::to_rgba({c.x * shade, c.y * shade, c.z * shade, 1.0f});
-        };
-        counts += draw_mesh<rl::vec2>(model.mesh, perspective::target_of(frame), options.pipeline,
-                                      vertex_stage, pixel_stage);
+        const TexturedProgram program{mvp, model.texture, options.sampler, options.lod, light};
+        counts += draw(MeshView(model.mesh, model.transform), program, frame, options.pipeline);
     }
     return counts;
 }

@@ -5,7 +5,7 @@
 //
 //   std::vector<perspective::Model> models = perspective::default_scene(warnings);
 //   perspective::Camera camera = perspective::frame_box(perspective::scene_bounds(models), 50, 1);
-//   zbuffer::Frame frame(800, 800);
+//   perspective::ColourTarget frame = perspective::colour_target(800, 800);
 //   perspective::render(models, camera, {}, frame);
 #pragma once
 
@@ -15,7 +15,6 @@
 #include <vector>
 
 #include "02_triangles/flat_shading.hpp"
-#include "03_zbuffer/hidden_surfaces.hpp"
 #include "04_textures/sampling.hpp"
 #include "pipeline.hpp"
 
@@ -54,14 +53,30 @@ inline const char* name(LodMethod value) {
 
 struct RenderOptions {
     PipelineOptions pipeline;
+    bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
     textures::SamplerState sampler{textures::Filter::trilinear, textures::Wrap::repeat};
     LodMethod lod = LodMethod::pixel;
     rl::vec3 light = triangles::kDefaultLight;  // towards the light, world space
     bool lighting = true;
 };
 
+// The lesson's program: texture coordinates as the varyings, the texture
+// sampled at each pixel and lit by the face's Lambert term.
+struct TexturedProgram {
+    rl::mat4 model_view_projection;
+    const textures::MipChain& texture;
+    textures::SamplerState sampler;
+    LodMethod lod;
+    const std::vector<float>& light;  // one per face
+    using Varyings = rl::vec2;
+    ClipVertex<rl::vec2> vertex(const MeshCorner& c) const {
+        return {model_view_projection * rl::extend(c.position(), 1.0f), c.uv()};
+    }
+    rl::Rgba fragment(const Fragment<rl::vec2>& f) const;
+};
+
 // Draws every model into the frame (width / height is the aspect ratio).
 PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
-                      const RenderOptions& options, zbuffer::Frame& frame);
+                      const RenderOptions& options, ColourTarget& frame);
 
 }  // namespace perspective

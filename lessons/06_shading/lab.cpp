@@ -35,7 +35,7 @@ struct Case {
 };
 
 rl::Image draw_sphere(const Setup& s, const Case& c) {
-    zbuffer::Frame frame(s.size, s.size);
+    perspective::ColourTarget frame = perspective::colour_target(s.size, s.size);
     Uniforms u{rl::mat4::identity(),
                rl::mat3::identity(),
                perspective::view_projection(s.camera, 1.0f),
@@ -47,8 +47,8 @@ rl::Image draw_sphere(const Setup& s, const Case& c) {
     if (c.output == Output::naive)  // the albedo as the byte that stores it, taken as light
         u.colour = {linear_to_srgb(s.albedo.x), linear_to_srgb(s.albedo.y),
                     linear_to_srgb(s.albedo.z)};
-    draw_model(c.model, Surface{c.mesh, c.normals}, u, perspective::target_of(frame), {}, c.output);
-    return frame.colour;
+    draw_model(c.model, Surface{c.mesh, c.normals}, u, frame, {}, c.output);
+    return frame.colour();
 }
 
 void draw_case(benchmark::State& state, const Setup* s, const Case* c) {

@@ -59,9 +59,9 @@ int main(int argc, char** argv) {
         }();
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
-        zbuffer::Frame frame(width, height);
+        perspective::ColourTarget frame = perspective::colour_target(width, height);
         const perspective::PipelineCounts counts = shading::render(models, camera, options, frame);
-        rl::save_image(output, frame.colour);
+        rl::save_image(output, frame.colour());
         std::printf(
             "%zu models: %zu faces, %zu back faces, %zu clipped, %zu fragments shaded; %s "
             "shading, %s output, %zu corner normals computed (%s-weighted); into %s\n",

@@ -60,15 +60,9 @@ std::vector<rl::vec3> corner_normals(const rl::Mesh& mesh, Weighting weighting,
     return out;
 }
 
-rl::mat3 linear_part(const rl::mat4& m) {
-    rl::mat3 out;
-    for (std::size_t r = 0; r < 3; ++r) out[r] = m[r].xyz();
-    return out;
-}
-
 // [doc:normal-matrix]
 std::optional<rl::mat3> normal_matrix(const rl::mat4& model) {
-    const std::optional<rl::mat3> inverse = rl::inverse(linear_part(model));
+    const std::optional<rl::mat3> inverse = rl::inverse(rl::linear_part(model));
     if (!inverse) return std::nullopt;
     return rl::transpose(*inverse);
 }

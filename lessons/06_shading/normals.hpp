@@ -13,6 +13,7 @@
 #include "rasterlab/mat.hpp"
 #include "rasterlab/mesh.hpp"
 #include "rasterlab/named_enum.hpp"
+#include "rasterlab/transform.hpp"
 
 namespace shading {
 
@@ -50,8 +51,5 @@ std::vector<rl::vec3> corner_normals(const rl::Mesh& mesh, Weighting weighting,
 // inverse transpose of M's upper 3x3 (equal to it for rotations; different
 // under non-uniform scale). Empty when M's 3x3 is singular.
 std::optional<rl::mat3> normal_matrix(const rl::mat4& model);
-
-// The upper 3x3 of a 4x4 matrix.
-rl::mat3 linear_part(const rl::mat4& m);
 
 }  // namespace shading

@@ -41,15 +41,14 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
     const std::optional<rl::mat3> normals = normal_matrix(m.transform);
     if (!normals) return std::nullopt;  // a flattened model (a zero scale) has no surface to light
     return Placed{{m.transform, *normals, mvp, camera.eye, lighting, &m.texture, sampler, {}},
-                  {m.mesh, lit.normals, rl::determinant(linear_part(m.transform)) < 0}};
+                  Surface(m.mesh, lit.normals, m.transform)};
 }
 
 // [doc:render-lit]
 perspective::PipelineCounts render(const std::vector<LitModel>& models,
                                    const perspective::Camera& camera, const ShadingOptions& options,
-                                   zbuffer::Frame& frame) {
-    const float aspect =
-        static_cast<float>(frame.colour.width()) / static_cast<float>(frame.colour.height());
+                                   perspective::ColourTarget& frame) {
+    const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     textures::SamplerState sampler;
     sampler.filter = options.filter;
@@ -57,9 +56,9 @@ perspective::PipelineCounts render(const std::vector<LitModel>& models,
     perspective::PipelineCounts counts;
     for (const LitModel& lit : models)
         if (const std::optional<Placed> p = place(lit, view_projection, camera, options.lighting,
-                                                  sampler, options.pipeline.cull_objects, counts))
-            counts += draw_model(options.model, p->surface, p->uniforms, perspective::target_of(frame),
-                                 options.pipeline, options.output);
+                                                  sampler, options.cull_objects, counts))
+            counts += draw_model(options.model, p->surface, p->uniforms, frame, options.pipeline,
+                                 options.output);
     return counts;
 }
 // [/doc:render-lit]

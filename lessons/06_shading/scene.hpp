@@ -28,6 +28,7 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
 
 struct ShadingOptions {
     perspective::PipelineOptions pipeline;
+    bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
     Model model = Model::blinn_phong;
     Output output = Output::srgb;
     Lighting<float> lighting = default_lighting(rl::vec3{0.3f, 0.5f, 1.0f});
@@ -50,6 +51,6 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
 
 perspective::PipelineCounts render(const std::vector<LitModel>& models,
                                    const perspective::Camera& camera, const ShadingOptions& options,
-                                   zbuffer::Frame& frame);
+                                   perspective::ColourTarget& frame);
 
 }  // namespace shading

@@ -1,14 +1,17 @@
 // Shaders, the way GPUs are programmed: a type with a vertex function (one
-// corner of a face and the shader's own uniforms in; a clip-space position
-// and varyings out) and a fragment function (interpolated varyings in; a
-// linear colour out, or std::nullopt to discard the pixel). The pipeline of
-// lesson 05 runs them: shaders are types checked by a concept, so the calls
-// are inlined, with no virtual call per pixel. Derivation:
+// corner of a surface and the shader's own uniforms in; a clip-space
+// position and varyings out) and a fragment function (interpolated varyings
+// in; a linear colour out). Lesson 05's pipeline runs them: shaders are types
+// checked by a concept, so the calls are inlined, with no virtual call per
+// pixel. A shader declares what else it does: `using Flat = ...` for values
+// taken from the face's first vertex and not interpolated, and
+// `static constexpr bool may_discard = true` when fragment() returns
+// std::optional (std::nullopt discards the pixel). Derivation:
 // docs/06_shading.md#shaders.
 //
-//   shading::draw(shading::Surface{mesh, normals},
+//   shading::draw(shading::Surface(mesh, normals),
 //                 shading::UnlitShader{mvp, {1, 0, 0}},  // shaders.hpp: a complete shader
-//                 perspective::target_of(frame), {});
+//                 frame, {});
 #pragma once
 
 #include <concepts>
@@ -21,40 +24,54 @@
 
 namespace shading {
 
-// What the vertex function sees of one corner (model space).
-struct VertexInput {
-    rl::vec3 position;
-    rl::vec3 normal;       // the corner's unit normal (corner_normals)
-    rl::vec3 face_normal;  // the face's unit normal, for flat shading
-    rl::vec2 uv;           // (0, 0) where the OBJ gives none
-    int face, corner;
+// One corner of a surface as the vertex function reads it: lesson 05's mesh
+// corner (position, uv) and its unit normal.
+struct SurfaceCorner : perspective::MeshCorner {
+    const std::vector<rl::vec3>* normals;  // 3 per face
+    rl::vec3 normal() const {
+        return (*normals)[3 * static_cast<std::size_t>(face) + static_cast<std::size_t>(corner)];
+    }
+    rl::vec3 face_normal() const { return rl::normalize(area_normal(*mesh, mesh_face())); }
+};
+
+// A mesh with a normal per corner, ready to shade; mirroring as lesson 05's
+// MeshView decides it from the model matrix.
+struct Surface {
+    perspective::MeshView view;
+    const std::vector<rl::vec3>* normals;  // 3 per face: corner_normals(mesh, ...)
+    Surface(const rl::Mesh& mesh, const std::vector<rl::vec3>& corner_normals,
+            const rl::mat4& model = rl::mat4::identity())
+        : view(mesh, model), normals(&corner_normals) {}
+    int face_count() const { return view.face_count(); }
+    SurfaceCorner corner(int face, int k) const { return {view.corner(face, k), normals}; }
 };
 
 template <class S>
-concept Shader = requires(const S& shader, const VertexInput& in,
-                          const perspective::Fragment<typename S::Varyings>& fragment) {
-    requires perspective::Varyings<typename S::Varyings>;
-    { shader.vertex(in) } -> std::same_as<perspective::ClipVertex<typename S::Varyings>>;
-    requires std::same_as<decltype(shader.fragment(fragment)), rl::vec3> ||
-        std::same_as<decltype(shader.fragment(fragment)), std::optional<rl::vec3>>;
+concept Shader = perspective::Program<S, SurfaceCorner> &&
+    requires(const S& shader,
+             const perspective::Fragment<typename S::Varyings, perspective::FlatOf<S>>& f) {
+    shader.fragment(f);
 };
 
-// A varying that is not interpolated: every pixel of a triangle gets the
-// value of its first vertex (the "provoking vertex", as in OpenGL). It obeys
-// + and * by keeping its left operand, which is all interpolation and
-// clipping ever do to it.
-template <class T>
-struct Flat {
-    T value{};
-    friend Flat operator+(const Flat& a, const Flat&) { return a; }
-    friend Flat operator*(const Flat& a, float) { return a; }
-};
-
-// A mesh with a normal per corner, ready to shade.
-struct Surface {
-    const rl::Mesh& mesh;
-    const std::vector<rl::vec3>& normals;  // 3 per face: corner_normals(mesh, ...)
-    bool mirrored = false;  // the model matrix mirrors (det < 0): faces turn clockwise
+// A shader's colour encoded for an 8-bit target by `output` (sRGB or naive).
+template <Shader S>
+struct Encoded {
+    const S& shader;
+    Output output;
+    using Varyings = typename S::Varyings;
+    using Flat = perspective::FlatOf<S>;
+    static constexpr bool may_discard = perspective::ProgramTraits<S>::may_discard;
+    perspective::ClipVertex<Varyings, Flat> vertex(const SurfaceCorner& c) const {
+        return shader.vertex(c);
+    }
+    auto fragment(const perspective::Fragment<Varyings, Flat>& f) const {
+        if constexpr (may_discard) {
+            const std::optional<rl::vec3> c = shader.fragment(f);
+            return c ? std::optional<rl::Rgba>(encode(*c, output)) : std::nullopt;
+        } else {
+            return encode(shader.fragment(f), output);
+        }
+    }
 };
 
 // [doc:draw-shader]
@@ -62,33 +79,10 @@ struct Surface {
 // fragment's linear colour is written encoded by `output`.
 template <Shader S>
 perspective::PipelineCounts draw(const Surface& surface, const S& shader,
-                                 perspective::RenderTarget target,
+                                 perspective::ColourTarget& target,
                                  const perspective::PipelineOptions& options,
                                  Output output = Output::srgb) {
-    using V = typename S::Varyings;
-    const rl::Mesh& mesh = surface.mesh;
-    const auto vertex_stage = [&](const rl::Face& face, int k) {
-        // A mirroring model matrix reverses every face's winding: take the
-        // corners in reverse so that front faces stay counter-clockwise.
-        const int corner = surface.mirrored ? (3 - k) % 3 : k;
-        const auto index = static_cast<std::size_t>(&face - mesh.faces.data());
-        const rl::Corner& c = face.corners[static_cast<std::size_t>(corner)];
-        return shader.vertex(
-            VertexInput{mesh.position(face, corner),
-                        surface.normals[3 * index + static_cast<std::size_t>(corner)],
-                        rl::normalize(area_normal(mesh, face)),
-                        c.uv >= 0 ? mesh.uvs[static_cast<std::size_t>(c.uv)] : rl::vec2{},
-                        static_cast<int>(index), corner});
-    };
-    const auto pixel_stage = [&](const perspective::Fragment<V>& f) {
-        if constexpr (std::same_as<decltype(shader.fragment(f)), rl::vec3>) {
-            return encode(shader.fragment(f), output);
-        } else {
-            const std::optional<rl::vec3> c = shader.fragment(f);
-            return c ? std::optional<rl::Rgba>(encode(*c, output)) : std::nullopt;
-        }
-    };
-    return perspective::draw_mesh<V>(mesh, target, options, vertex_stage, pixel_stage);
+    return perspective::draw(surface, Encoded<S>{shader, output}, target, options);
 }
 // [/doc:draw-shader]
 

@@ -14,7 +14,7 @@ Reflection<float> light_at(const Uniforms& u, rl::vec3 world_position, rl::vec3 
 }
 
 perspective::PipelineCounts draw_model(Model model, const Surface& surface, const Uniforms& u,
-                                       perspective::RenderTarget target,
+                                       perspective::ColourTarget& target,
                                        const perspective::PipelineOptions& options, Output output) {
     switch (model) {
         case Model::flat:

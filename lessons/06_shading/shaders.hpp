@@ -55,8 +55,8 @@ struct UnlitShader {
     rl::mat4 model_view_projection;
     rl::vec3 colour;         // linear
     using Varyings = float;  // nothing to carry to the pixels
-    perspective::ClipVertex<float> vertex(const VertexInput& in) const {
-        return {model_view_projection * rl::extend(in.position, 1.0f), 0.0f};
+    perspective::ClipVertex<float> vertex(const SurfaceCorner& in) const {
+        return {model_view_projection * rl::extend(in.position(), 1.0f), 0.0f};
     }
     rl::vec3 fragment(const perspective::Fragment<float>&) const { return colour; }
 };
@@ -65,21 +65,15 @@ struct UnlitShader {
 // [doc:flat-shader]
 struct FlatShader {
     const Uniforms& u;
-    struct Varyings {
-        Flat<Reflection<float>> light;  // the same for the whole face
-        rl::vec2 uv;
-        friend Varyings operator+(const Varyings& a, const Varyings& b) {
-            return {a.light + b.light, a.uv + b.uv};
-        }
-        friend Varyings operator*(const Varyings& a, float s) { return {a.light * s, a.uv * s}; }
-    };
-    perspective::ClipVertex<Varyings> vertex(const VertexInput& in) const {
-        return {u.clip(in.position),
-                {{light_at(u, u.world(in.position), u.world_normal(in.face_normal))}, in.uv}};
+    using Varyings = rl::vec2;       // the texture coordinates
+    using Flat = Reflection<float>;  // the light, from the face's first vertex
+    perspective::ClipVertex<Varyings, Flat> vertex(const SurfaceCorner& in) const {
+        return {u.clip(in.position()), in.uv(),
+                light_at(u, u.world(in.position()), u.world_normal(in.face_normal()))};
     }
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
-        const Reflection<float>& l = f.varyings.light.value;
-        return u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv) * l.diffuse + l.specular;
+    rl::vec3 fragment(const perspective::Fragment<Varyings, Flat>& f) const {
+        const Reflection<float>& l = f.flat();
+        return u.albedo(f.varyings, f.d_dx(), f.d_dy()) * l.diffuse + l.specular;
     }
 };
 // [/doc:flat-shader]
@@ -89,16 +83,11 @@ struct GouraudShader {
     struct Varyings {
         rl::vec3 diffuse, specular;  // light computed at the vertices, interpolated
         rl::vec2 uv;
-        friend Varyings operator+(const Varyings& a, const Varyings& b) {
-            return {a.diffuse + b.diffuse, a.specular + b.specular, a.uv + b.uv};
-        }
-        friend Varyings operator*(const Varyings& a, float s) {
-            return {a.diffuse * s, a.specular * s, a.uv * s};
-        }
     };
-    perspective::ClipVertex<Varyings> vertex(const VertexInput& in) const {
-        const Reflection<float> l = light_at(u, u.world(in.position), u.world_normal(in.normal));
-        return {u.clip(in.position), {l.diffuse, l.specular, in.uv}};
+    perspective::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
+        const Reflection<float> l =
+            light_at(u, u.world(in.position()), u.world_normal(in.normal()));
+        return {u.clip(in.position()), {l.diffuse, l.specular, in.uv()}};
     }
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
         return u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv) * f.varyings.diffuse +
@@ -113,15 +102,10 @@ struct PhongShader {
     struct Varyings {
         rl::vec3 position, normal;  // world space, interpolated across the face
         rl::vec2 uv;
-        friend Varyings operator+(const Varyings& a, const Varyings& b) {
-            return {a.position + b.position, a.normal + b.normal, a.uv + b.uv};
-        }
-        friend Varyings operator*(const Varyings& a, float s) {
-            return {a.position * s, a.normal * s, a.uv * s};
-        }
     };
-    perspective::ClipVertex<Varyings> vertex(const VertexInput& in) const {
-        return {u.clip(in.position), {u.world(in.position), u.world_normal(in.normal), in.uv}};
+    perspective::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
+        return {u.clip(in.position()),
+                {u.world(in.position()), u.world_normal(in.normal()), in.uv()}};
     }
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
         // An interpolated unit normal is shorter than 1 between the vertices:
@@ -136,7 +120,7 @@ struct PhongShader {
 
 // Draws the surface with the chosen shading model.
 perspective::PipelineCounts draw_model(Model model, const Surface& surface, const Uniforms& u,
-                                       perspective::RenderTarget target,
+                                       perspective::ColourTarget& target,
                                        const perspective::PipelineOptions& options, Output output);
 
 }  // namespace shading

@@ -39,29 +39,26 @@ struct Globe {
     shading::Uniforms uniforms;
 };
 
-// The shader's normal at every pixel it draws (NaN elsewhere).
+// The shader's normal at every pixel it draws, as the fragment's output
+// into a target of normals (NaN where nothing is drawn).
 struct NormalProbe {
     NormalMappedShader shader;
-    rl::Grid<rl::vec3>* normals;
     using Varyings = NormalMappedShader::Varyings;
-    perspective::ClipVertex<Varyings> vertex(const shading::VertexInput& in) const {
+    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return shader.vertex(in);
     }
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
-        normals->at(f.x, f.y) = shader.normal_at(f, f.d_dx().uv, f.d_dy().uv);
-        return {};
+        return shader.normal_at(f, f.d_dx().uv, f.d_dy().uv);
     }
 };
 
 rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl::vec4>& tangents,
                          NormalMap source) {
-    rl::Grid<rl::vec3> normals(g.size, g.size, rl::vec3{NAN, NAN, NAN});
-    zbuffer::Frame frame(g.size, g.size);
-    const NormalProbe p{{g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents},
-                        &normals};
-    shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, p, perspective::target_of(frame),
-                  {});
-    return normals;
+    perspective::RenderTarget<rl::vec3> normals(g.size, g.size, {}, rl::vec3{NAN, NAN, NAN});
+    const NormalProbe p{
+        {g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents}};
+    perspective::draw(shading::Surface(g.model.lit.model.mesh, g.model.lit.normals), p, normals);
+    return normals.colour();
 }
 
 // The exact normal at each pixel: the ray meets the sphere of radius 0.9,
@@ -125,13 +122,13 @@ struct SpeedScene {
 void frame_ours(benchmark::State& state, const SpeedScene* s) {
     const Globe& g = *s->globe;
     for (auto _ : state) {
-        zbuffer::Frame frame(g.size, g.size);
+        perspective::ColourTarget frame = perspective::colour_target(g.size, g.size);
         const NormalMappedShader shader{
             g.uniforms, g.model.maps,     NormalMap::tangent, shading::Specular::phong,
             1.0f,       &g.model.tangents};
-        shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, shader,
-                      perspective::target_of(frame), {});
-        benchmark::DoNotOptimize(frame.colour.get(0, 0));
+        shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, shader, frame,
+                      {});
+        benchmark::DoNotOptimize(frame.colour().get(0, 0));
     }
 }
 
@@ -152,13 +149,14 @@ void build_tangents(benchmark::State& state, const shading::LitModel* lit, Tange
 
 void render_globe(benchmark::State& state, const Timed* t) {
     for (auto _ : state) {
-        zbuffer::Frame frame(t->globe->size, t->globe->size);
+        perspective::ColourTarget frame =
+            perspective::colour_target(t->globe->size, t->globe->size);
         const NormalMappedShader shader{
             t->globe->uniforms, *t->maps, t->source, shading::Specular::blinn_phong, 1.0f,
             t->tangents};
         shading::draw(shading::Surface{t->globe->model.lit.model.mesh, t->globe->model.lit.normals},
-                      shader, perspective::target_of(frame), {});
-        benchmark::DoNotOptimize(frame.colour.get(0, 0));
+                      shader, frame, {});
+        benchmark::DoNotOptimize(frame.colour().get(0, 0));
     }
 }
 

@@ -46,13 +46,13 @@ int main(int argc, char** argv) {
         const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
 
         // [doc:lesson07-main]
-        zbuffer::Frame frame(width, height);
+        perspective::ColourTarget frame = perspective::colour_target(width, height);
         const auto start = std::chrono::steady_clock::now();
         const perspective::PipelineCounts counts =
             normal_mapping::render(models, camera, options, frame);
         const std::chrono::duration<double, std::milli> took =
             std::chrono::steady_clock::now() - start;
-        rl::save_image(output, frame.colour);
+        rl::save_image(output, frame.colour());
         // [/doc:lesson07-main]
         std::printf(
             "%zu models: %zu faces, %zu back faces, %zu fragments shaded in %.1f ms (rendering "

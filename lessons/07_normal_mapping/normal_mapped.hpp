@@ -51,26 +51,19 @@ struct NormalMappedShader {
         rl::vec3 position, normal, tangent;  // world space
         float handedness;
         rl::vec2 uv;
-        friend Varyings operator+(const Varyings& a, const Varyings& b) {
-            return {a.position + b.position, a.normal + b.normal, a.tangent + b.tangent,
-                    a.handedness + b.handedness, a.uv + b.uv};
-        }
-        friend Varyings operator*(const Varyings& a, float s) {
-            return {a.position * s, a.normal * s, a.tangent * s, a.handedness * s, a.uv * s};
-        }
     };
     // The vertex stage reads the corner's tangent from here (3 per face).
     const std::vector<rl::vec4>* tangents = nullptr;
 
-    perspective::ClipVertex<Varyings> vertex(const shading::VertexInput& in) const {
+    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         const rl::vec4 t = (*tangents)[3 * static_cast<std::size_t>(in.face) +
                                        static_cast<std::size_t>(in.corner)];
         // A tangent is a direction along the surface: it transforms like a
         // position difference (by the model's 3x3), not like a normal.
         const rl::vec3 world_tangent = (u.model * rl::vec4{t.x, t.y, t.z, 0}).xyz();
-        return {
-            u.clip(in.position),
-            {u.world(in.position), u.world_normal(in.normal), world_tangent, t.w * mirror, in.uv}};
+        return {u.clip(in.position()),
+                {u.world(in.position()), u.world_normal(in.normal()), world_tangent, t.w * mirror,
+                 in.uv()}};
     }
 
     // The unit normal at a pixel, in world space: from the map chosen, or

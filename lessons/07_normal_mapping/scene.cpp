@@ -30,9 +30,8 @@ std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::st
 // [doc:render-mapped]
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                    const perspective::Camera& camera, const RenderOptions& options,
-                                   zbuffer::Frame& frame) {
-    const float aspect =
-        static_cast<float>(frame.colour.width()) / static_cast<float>(frame.colour.height());
+                                   perspective::ColourTarget& frame) {
+    const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     textures::SamplerState sampler;  // the diffuse texture: sRGB, trilinear
     sampler.filter = textures::Filter::trilinear;
@@ -41,16 +40,15 @@ perspective::PipelineCounts render(const std::vector<MappedModel>& models,
     for (const MappedModel& m : models) {
         const std::optional<shading::Placed> p =
             shading::place(m.lit, view_projection, camera, options.lighting, sampler,
-                           options.pipeline.cull_objects, counts);
+                           options.cull_objects, counts);
         if (!p) continue;
         const NormalMappedShader shader{p->uniforms,
                                         m.maps,
                                         options.normal_map,
                                         options.specular,
-                                        p->surface.mirrored ? -1.0f : 1.0f,
+                                        p->surface.view.mirrored ? -1.0f : 1.0f,
                                         &m.tangents};
-        counts += shading::draw(p->surface, shader, perspective::target_of(frame), options.pipeline,
-                                shading::Output::srgb);
+        counts += shading::draw(p->surface, shader, frame, options.pipeline, shading::Output::srgb);
     }
     return counts;
 }

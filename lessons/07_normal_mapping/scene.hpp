@@ -25,6 +25,7 @@ std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::st
 
 struct RenderOptions {
     perspective::PipelineOptions pipeline;
+    bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
     NormalMap normal_map = NormalMap::tangent;
     shading::Specular specular = shading::Specular::blinn_phong;
     shading::Lighting<float> lighting = shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f});
@@ -32,6 +33,6 @@ struct RenderOptions {
 
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                    const perspective::Camera& camera, const RenderOptions& options,
-                                   zbuffer::Frame& frame);
+                                   perspective::ColourTarget& frame);
 
 }  // namespace normal_mapping

@@ -72,4 +72,11 @@ mat4 perspective(float fov_y_degrees, float aspect, float near, float far);
 // has its centre at (i + 0.5, j + 0.5)), z in [-1, 1] to depth [0, 1].
 vec3 ndc_to_window(vec3 ndc, int width, int height);
 
+// The upper-left 3x3 of an affine transform: how it moves directions.
+inline mat3 linear_part(const mat4& m) {
+    mat3 out;
+    for (std::size_t r = 0; r < 3; ++r) out[r] = m[r].xyz();
+    return out;
+}
+
 }  // namespace rl

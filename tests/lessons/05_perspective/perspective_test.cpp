@@ -124,21 +124,17 @@ rl::dvec2 exact_uv(const WorldTriangle& t, const RayCamera& rays, int x, int y) 
     return t.uv[0] * hit->weights.x + t.uv[1] * hit->weights.y + t.uv[2] * hit->weights.z;
 }
 
-// Largest UV error over a floor triangle receding from the eye.
-double largest_uv_error(Interpolation interpolation, double* largest_derivative_error) {
-    const Camera camera = looking_down_minus_z();
-    const WorldTriangle floor{{{-2, -1, -1}, {2, -1, -1}, {0, -1, -12}},
-                              {{0, 0}, {1, 0}, {0.5, 1}}};
-    const int width = 160, height = 120;
-    const RayCamera rays(camera, width, height);
-    zbuffer::Frame frame(width, height);
-    const rl::mat4 vp = view_projection(camera, 160.0f / 120.0f);
-    const std::array<ClipVertex<rl::vec2>, 3> v = clip_vertices(floor, vp);
-    PipelineOptions options;
-    options.interpolation = interpolation;
-    double worst = 0, worst_derivative = 0;
-    PipelineCounts counts;
-    auto pixel_stage = [&](const Fragment<rl::vec2>& f) {
+// Scores every fragment's texture coordinates and their x derivative
+// against the exact mapping of the floor triangle.
+struct UvProbe {
+    WorldProgram world;
+    const WorldTriangle& floor;
+    const RayCamera& rays;
+    double& worst;
+    double& worst_derivative;
+    using Varyings = rl::vec2;
+    ClipVertex<rl::vec2> vertex(const WorldCorner& c) const { return world.vertex(c); }
+    rl::Rgba fragment(const Fragment<rl::vec2>& f) const {
         const rl::dvec2 truth = exact_uv(floor, rays, f.x, f.y);
         if (std::isnan(truth.x)) return rl::Rgba{};  // centre just off the exact triangle
         worst = std::max(worst, rl::length(rl::cast<double>(f.varyings) - truth));
@@ -150,9 +146,23 @@ double largest_uv_error(Interpolation interpolation, double* largest_derivative_
                 worst_derivative, rl::length(rl::cast<double>(f.d_dx()) - (right - left) * 0.5) /
                                       std::max(rl::length((right - left) * 0.5), 1e-9));
         return rl::Rgba{};
-    };
-    draw_triangle(v, clip_planes(options.clip, width, height), options, perspective::target_of(frame), pixel_stage,
-                  0, counts);
+    }
+};
+
+// Largest UV error over a floor triangle receding from the eye.
+double largest_uv_error(Interpolation interpolation, double* largest_derivative_error) {
+    const Camera camera = looking_down_minus_z();
+    const std::vector<WorldTriangle> scene = {
+        {{{-2, -1, -1}, {2, -1, -1}, {0, -1, -12}}, {{0, 0}, {1, 0}, {0.5, 1}}}};
+    const int width = 160, height = 120;
+    const RayCamera rays(camera, width, height);
+    perspective::ColourTarget frame = perspective::colour_target(width, height);
+    PipelineOptions options;
+    options.interpolation = interpolation;
+    double worst = 0, worst_derivative = 0;
+    const UvProbe probe{
+        {view_projection(camera, 160.0f / 120.0f)}, scene[0], rays, worst, worst_derivative};
+    const PipelineCounts counts = draw(WorldScene{&scene}, probe, frame, options);
     EXPECT_GT(counts.fragments, 1000u);
     if (largest_derivative_error) *largest_derivative_error = worst_derivative;
     return worst;
@@ -160,7 +170,7 @@ double largest_uv_error(Interpolation interpolation, double* largest_derivative_
 
 TEST(PerspectiveTest, PerspectiveCorrectTextureCoordinatesMatchTheSurface) {
     double derivative_error = 0;
-    EXPECT_LT(largest_uv_error(Interpolation::perspective, &derivative_error), 1e-4);
+    EXPECT_LT(largest_uv_error(Interpolation::perspective_correct, &derivative_error), 1e-4);
     // Central differences of a curved mapping are themselves off by a few
     // per cent on the far rows; 5% still tells a right derivative from a wrong one.
     EXPECT_LT(derivative_error, 0.05);
@@ -259,7 +269,7 @@ TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
     camera.eye = {1.0f, 0.9f, -0.6f};  // the globe's centre
     camera.target = {0, 0.9f, 3};
     fit_depth_range(camera, scene_bounds(models));
-    zbuffer::Frame frame(64, 64);
+    perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const PipelineCounts counts = render(models, camera, {}, frame);
     EXPECT_EQ(counts.refused, 0u);
     EXPECT_GT(counts.clipped, 0u);
@@ -278,10 +288,10 @@ double share_differing_from_origin(float offset) {
                                     rl::compose({.translation = {at, -at, at}}), warnings));
         const Camera camera = frame_box(scene_bounds(models), 50, 1);
         check(camera);
-        zbuffer::Frame frame(128, 128);
+        perspective::ColourTarget frame = perspective::colour_target(128, 128);
         const PipelineCounts counts = render(models, camera, {}, frame);
         EXPECT_EQ(counts.refused, 0u);
-        return frame.colour;
+        return frame.colour();
     };
     return rl::compare_images(draw(0), draw(offset), 8).share_over;
 }
@@ -303,7 +313,7 @@ TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
     const std::vector<Model> big = scene_at_scale(1e15f);
     const Camera camera = frame_box(scene_bounds(big), 50, 1);
     ASSERT_NO_THROW(check(camera));
-    zbuffer::Frame frame(64, 64);
+    perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const PipelineCounts counts = render(big, camera, {}, frame);
     EXPECT_EQ(counts.refused, 0u);
     EXPECT_GT(counts.fragments, 300u);

@@ -93,7 +93,7 @@ TEST(ShadingTest, AngleWeightingDoesNotDependOnHowFacesAreCut) {
 // of the transformed sphere, over all vertices.
 double worst_normal_error(const rl::mat4& model, bool use_normal_matrix) {
     const rl::Mesh sphere = uv_sphere(32);
-    const rl::mat3 m = linear_part(model);
+    const rl::mat3 m = rl::linear_part(model);
     const rl::mat3 n = use_normal_matrix ? *normal_matrix(model) : m;
     const std::optional<rl::mat3> inverse = rl::inverse(m);
     double worst = 0;
@@ -136,12 +136,12 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
                {},
                {0.8f, 0.8f, 0.8f}};
     u.lighting.lights.resize(1);
-    zbuffer::Frame frame(64, 64);
+    perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const perspective::PipelineCounts counts = draw_model(
-        Model::blinn_phong, Surface{sphere, normals, true}, u, perspective::target_of(frame), {}, Output::srgb);
+        Model::blinn_phong, Surface(sphere, normals, mirror), u, frame, {}, Output::srgb);
     EXPECT_GT(counts.fragments, 1000u);
     // Lit from +x: the right half is brighter than the left.
-    EXPECT_GT(frame.colour.get(44, 32).r, frame.colour.get(20, 32).r + 40);
+    EXPECT_GT(frame.colour().get(44, 32).r, frame.colour().get(20, 32).r + 40);
 }
 
 TEST(ShadingTest, InterpolatedNormalsAreRenormalised) {
@@ -190,19 +190,14 @@ TEST(ShadingTest, GrazingLightAndExtremeExponentsStayFinite) {
                 1e-6f);
 }
 
-TEST(ShadingTest, FlatVaryingsKeepTheFirstVertexValue) {
-    const Flat<float> a{1}, b{2}, c{3};
-    const Flat<float> mixed = a * 0.2f + b * 0.3f + c * 0.5f;
-    EXPECT_EQ(mixed.value, 1.0f);
-}
-
 // A shader that discards every pixel must leave the depth buffer alone, so
 // that what lies behind is still drawn (the late depth test).
 struct DiscardEverything {
     rl::mat4 mvp;
     using Varyings = float;
-    perspective::ClipVertex<float> vertex(const VertexInput& in) const {
-        return {mvp * rl::extend(in.position, 1.0f), 0.0f};
+    static constexpr bool may_discard = true;
+    perspective::ClipVertex<float> vertex(const SurfaceCorner& in) const {
+        return {mvp * rl::extend(in.position(), 1.0f), 0.0f};
     }
     std::optional<rl::vec3> fragment(const perspective::Fragment<float>&) const {
         return std::nullopt;
@@ -215,13 +210,13 @@ TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
     const rl::mat4 near = rl::compose({.translation = {0, 0, 0.5f}});
     const rl::mat4 far = rl::compose({.translation = {0, 0, -0.5f}});
     const rl::mat4 ortho = rl::mat4::identity();
-    zbuffer::Frame frame(16, 16);
+    perspective::ColourTarget frame = perspective::colour_target(16, 16);
     const Surface surface{quad, normals};
-    draw(surface, DiscardEverything{ortho * near}, perspective::target_of(frame), {}, Output::naive);
+    draw(surface, DiscardEverything{ortho * near}, frame, {}, Output::naive);
     const perspective::PipelineCounts counts =
-        draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, perspective::target_of(frame), {}, Output::naive);
+        draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, frame, {}, Output::naive);
     EXPECT_EQ(counts.fragments, 256u);
-    EXPECT_EQ(frame.colour.get(8, 8).r, 255);
+    EXPECT_EQ(frame.colour().get(8, 8).r, 255);
 }
 
 TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
@@ -249,10 +244,10 @@ TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
         if (o == Output::naive)
             u.colour = {linear_to_srgb(albedo.x), linear_to_srgb(albedo.y),
                         linear_to_srgb(albedo.z)};
-        zbuffer::Frame frame(96, 96);
-        draw_model(Model::blinn_phong, Surface{sphere, normals}, u, perspective::target_of(frame), {}, o);
+        perspective::ColourTarget frame = perspective::colour_target(96, 96);
+        draw_model(Model::blinn_phong, Surface{sphere, normals}, u, frame, {}, o);
         error[o == Output::srgb ? 0 : 1] =
-            compare_spheres(truth, frame.colour, rl::kBackground).interior_rmse;
+            compare_spheres(truth, frame.colour(), rl::kBackground).interior_rmse;
     }
     EXPECT_LT(error[0], 3.0);
     EXPECT_GT(error[1], 4 * error[0]);

@@ -1,0 +1,297 @@
+// The pipeline's render targets, depth state, samples, tiles, flat values
+// and varyings arithmetic (docs/05_perspective.md#the-pipeline).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "05_perspective/scene.hpp"
+#include "05_perspective/view_options.hpp"
+#include "rasterlab/image_metrics.hpp"
+
+namespace {
+
+using namespace perspective;
+
+// Triangles given directly in clip space, as the pipeline's geometry.
+struct ClipCorner {
+    rl::vec4 position;
+    int face, corner;
+};
+struct ClipTriangles {
+    std::vector<std::array<rl::vec4, 3>> faces;
+    int face_count() const { return static_cast<int>(faces.size()); }
+    ClipCorner corner(int face, int k) const {
+        return {faces[static_cast<std::size_t>(face)][static_cast<std::size_t>(k)], face, k};
+    }
+};
+
+// A square of two triangles filling NDC x, y in [-1, 1] at clip depth z(x)
+// (w = 1, so NDC is clip space): depth grows to the right when tilt > 0.
+ClipTriangles square(float depth, float tilt = 0) {
+    const auto at = [&](float x, float y) { return rl::vec4{x, y, depth + tilt * x, 1}; };
+    return {{{at(-1, -1), at(1, -1), at(1, 1)}, {at(-1, -1), at(1, 1), at(-1, 1)}}};
+}
+
+TargetOptions with_samples(int samples) {
+    TargetOptions o;
+    o.samples = samples;
+    return o;
+}
+TargetOptions with_depth(const zbuffer::DepthState& state) {
+    TargetOptions o;
+    o.depth = state;
+    return o;
+}
+zbuffer::DepthState depth_state(zbuffer::DepthCompare compare, float clear, bool write = true) {
+    zbuffer::DepthState d;
+    d.compare = compare;
+    d.clear = clear;
+    d.write = write;
+    return d;
+}
+
+// One triangle much larger than the screen, covering all of it.
+ClipTriangles covering_triangle() {
+    return {{{rl::vec4{-1, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{-1, 3, 0, 1}}}};
+}
+
+// Writes a constant, or the position's x and y, to every attachment it is given.
+struct Constant {
+    rl::Rgba colour;
+    using Varyings = rl::vec2;  // NDC x, y
+    ClipVertex<rl::vec2> vertex(const ClipCorner& c) const {
+        return {c.position, {c.position.x, c.position.y}};
+    }
+    rl::Rgba fragment(const Fragment<rl::vec2>&) const { return colour; }
+};
+
+struct DepthOnly {
+    int* fragment_calls;
+    using Varyings = float;
+    ClipVertex<float> vertex(const ClipCorner& c) const { return {c.position, 0.0f}; }
+    rl::Rgba fragment(const Fragment<float>&) const {
+        ++*fragment_calls;
+        return {};
+    }
+};
+
+TEST(Pipeline, DepthOnlyPassWritesDepthAndShadesNothing) {
+    int calls = 0;
+    RenderTarget<> target(32, 32);
+    const PipelineCounts counts = draw(square(0.5f), DepthOnly{&calls}, target);
+    EXPECT_EQ(calls, 0);  // no colour to write: the fragment stage never runs
+    EXPECT_EQ(counts.fragments, 32u * 32u);
+    EXPECT_FLOAT_EQ(target.depth()->at(10, 20), 0.75f);  // window depth (0.5 + 1) / 2
+}
+
+struct Two {
+    using Varyings = rl::vec2;
+    ClipVertex<rl::vec2> vertex(const ClipCorner& c) const {
+        return {c.position, {c.position.x, c.position.y}};
+    }
+    std::tuple<rl::Rgba, rl::vec3> fragment(const Fragment<rl::vec2>& f) const {
+        return {rl::Rgba{10, 20, 30, 255}, rl::vec3{f.varyings.x, f.varyings.y, 1}};
+    }
+};
+
+TEST(Pipeline, OnePassFillsTwoOutputs) {
+    RenderTarget<rl::Rgba, rl::vec3> target(16, 16, {}, rl::kBackground, rl::vec3{});
+    draw(square(0), Two{}, target);
+    EXPECT_EQ(target.colour<0>().at(3, 12), (rl::Rgba{10, 20, 30, 255}));
+    const rl::vec3 n =
+        target.colour<1>().at(3, 12);  // centre (3.5, 12.5) of 16: NDC (-0.5625, 0.5625)
+    EXPECT_NEAR(n.x, -0.5625f, 1e-5f);
+    EXPECT_NEAR(n.y, 0.5625f, 1e-5f);
+    EXPECT_EQ(n.z, 1.0f);
+}
+
+struct Bright {
+    using Varyings = float;
+    ClipVertex<float> vertex(const ClipCorner& c) const { return {c.position, 0.0f}; }
+    rl::vec3 fragment(const Fragment<float>&) const { return {4.0f, 2.5f, 1000.0f}; }
+};
+
+TEST(Pipeline, FloatTargetKeepsValuesAboveOne) {
+    RenderTarget<rl::vec3> target(8, 8, {}, rl::vec3{});
+    draw(square(0), Bright{}, target);
+    EXPECT_EQ(target.colour().at(4, 4), (rl::vec3{4.0f, 2.5f, 1000.0f}));
+}
+
+// Lesson 05's scene drawn with its own program, clip z negated (so window
+// depth d becomes 1 - d) when reversed.
+struct MaybeReversed {
+    TexturedProgram program;
+    bool reversed;
+    using Varyings = rl::vec2;
+    ClipVertex<rl::vec2> vertex(const MeshCorner& c) const {
+        ClipVertex<rl::vec2> v = program.vertex(c);
+        if (reversed) v.position.z = -v.position.z;
+        return v;
+    }
+    rl::Rgba fragment(const Fragment<rl::vec2>& f) const { return program.fragment(f); }
+};
+
+ColourTarget draw_default_scene(bool reversed) {
+    std::vector<std::string> warnings;
+    const std::vector<Model> models = default_scene(warnings);
+    const Camera camera = resolve_camera({}, scene_bounds(models), 4.0f / 3.0f);
+    const rl::mat4 vp = view_projection(camera, 4.0f / 3.0f);
+    const TargetOptions options = with_depth(
+        reversed ? depth_state(zbuffer::DepthCompare::greater, 0.0f) : zbuffer::DepthState{});
+    ColourTarget frame(160, 120, options, rl::kBackground);
+    for (const Model& m : models) {
+        const std::vector<float> light(m.mesh.faces.size(), 1.0f);
+        const TexturedProgram program{vp * m.transform, m.texture, {}, LodMethod::pixel, light};
+        draw(MeshView(m.mesh, m.transform), MaybeReversed{program, reversed}, frame);
+    }
+    return frame;
+}
+
+TEST(Pipeline, GreaterWithClearZeroReproducesReverseZ) {
+    const ColourTarget usual = draw_default_scene(false), reversed = draw_default_scene(true);
+    EXPECT_FLOAT_EQ(reversed.depth()->at(0, 119), 0.0f);  // the clear value where nothing is
+    // Equal up to rounding at the few pixels where two surfaces' depths tie.
+    const rl::ImageDiff d = rl::compare_images(usual.colour(), reversed.colour(), 0);
+    EXPECT_LT(d.share_over, 0.001) << d.max_abs;
+    EXPECT_GT(
+        rl::compare_images(usual.colour(), rl::Image(160, 120, rl::kBackground), 0).share_over,
+        0.1);  // (the scene is there)
+}
+
+TEST(Pipeline, BiasMovesDepthByTheStatedAmount) {
+    // Depth z = 0.2 x in clip space: window depth changes by 0.1 per NDC
+    // unit, 0.1 * 2 / 64 per pixel to the right, nothing upwards.
+    const float slope = 0.1f * 2 / 64;
+    zbuffer::DepthState bias;
+    bias.constant_bias = 0.01f;
+    bias.slope_bias = 3;
+    RenderTarget<> plain(64, 64), biased(64, 64, with_depth(bias));
+    draw(square(0, 0.2f), Constant{}, plain);
+    draw(square(0, 0.2f), Constant{}, biased);
+    for (const int x : {5, 31, 60})
+        EXPECT_NEAR(biased.depth()->at(x, 17) - plain.depth()->at(x, 17), 0.01f + 3 * slope, 1e-6f);
+}
+
+TEST(Pipeline, DepthStateComparesAndWritesAsStated) {
+    // A square at depth 0.75 over one at 0.25: `less` keeps the near one,
+    // `greater` the far one, and with writes off the buffer keeps its clear.
+    const auto run = [](const zbuffer::DepthState& state) {
+        ColourTarget t(8, 8, with_depth(state), rl::kBackground);
+        draw(square(-0.5f), Constant{{1, 0, 0, 255}}, t);  // window depth 0.25
+        draw(square(0.5f), Constant{{2, 0, 0, 255}}, t);   // window depth 0.75
+        return std::pair{t.colour().at(4, 4).r, t.depth()->at(4, 4)};
+    };
+    EXPECT_EQ(run({}).first, 1);
+    EXPECT_EQ(run(depth_state(zbuffer::DepthCompare::greater, 0)).first, 2);
+    EXPECT_EQ(run(depth_state(zbuffer::DepthCompare::always, 1)).first, 2);
+    const auto [colour, depth] = run(depth_state(zbuffer::DepthCompare::less, 1, false));
+    EXPECT_EQ(colour, 2);  // nothing written: each square passes against the clear value
+    EXPECT_EQ(depth, 1.0f);
+}
+
+struct Pattern {
+    using Varyings = rl::vec2;
+    ClipVertex<rl::vec2> vertex(const ClipCorner& c) const {
+        return {c.position, {c.position.x * 3.7f, c.position.y * 5.1f}};
+    }
+    rl::Rgba fragment(const Fragment<rl::vec2>& f) const {
+        const auto byte = [](float v) {
+            return static_cast<std::uint8_t>(static_cast<int>(std::floor(v * 97)) & 255);
+        };
+        return {byte(f.varyings.x), byte(f.varyings.y), 7, 255};
+    }
+};
+
+TEST(Pipeline, FourSamplesAllCoveredResolveToTheOneSampleImage) {
+    // The texture-coordinate pattern of a triangle covering every sample.
+    ColourTarget one(37, 23, {}, rl::kBackground), four(37, 23, with_samples(4), rl::kBackground);
+    draw(covering_triangle(), Pattern{}, one);
+    const PipelineCounts counts = draw(covering_triangle(), Pattern{}, four);
+    EXPECT_EQ(counts.fragments, 4u * 37u * 23u);
+    EXPECT_EQ(resolve(four.colour(), four.samples()), one.colour());
+    // and an edge: a pixel half covered resolves between the two colours.
+    ColourTarget edge(4, 4, with_samples(4), rl::Rgba{0, 0, 0, 255});
+    draw(ClipTriangles{{{rl::vec4{-1, -1, 0, 1}, rl::vec4{0.001f, -1, 0, 1},
+                         rl::vec4{0.001f, 1, 0, 1}}}},
+         Constant{{255, 255, 255, 255}}, edge);
+    const rl::Image resolved = resolve(edge.colour(), 4);
+    EXPECT_EQ(resolved.at(3, 0).r, 0);    // outside
+    EXPECT_EQ(resolved.at(1, 0).r, 255);  // inside
+    EXPECT_GT(resolved.at(0, 0).r, 0);    // on the slanted edge: some of its samples
+    EXPECT_LT(resolved.at(0, 0).r, 255);
+}
+
+TEST(Pipeline, SampleCountsOtherThanOneTwoFourEightAreRefused) {
+    EXPECT_THROW(ColourTarget(4, 4, with_samples(3), rl::kBackground), std::invalid_argument);
+    EXPECT_NO_THROW(ColourTarget(4, 4, with_samples(8), rl::kBackground));
+}
+
+TEST(Pipeline, TileByTileEqualsOneDraw) {
+    std::vector<std::string> warnings;
+    const std::vector<Model> models = default_scene(warnings);
+    const int width = 300, height = 200;
+    const Camera camera = resolve_camera({}, scene_bounds(models), 1.5f);
+    ColourTarget whole = colour_target(width, height), tiled = colour_target(width, height);
+    const PipelineCounts one = render(models, camera, {}, whole);
+    std::vector<triangles::PixelRect> rects = tiles(width, height, 64);
+    std::shuffle(rects.begin(), rects.end(), std::mt19937(5));
+    PipelineCounts sum;
+    for (const triangles::PixelRect& tile : rects) {
+        RenderOptions options;
+        options.pipeline.tile = tile;
+        sum += render(models, camera, options, tiled);
+    }
+    EXPECT_EQ(whole.colour(), tiled.colour());
+    EXPECT_EQ(*whole.depth(), *tiled.depth());
+    EXPECT_EQ(sum.fragments, one.fragments);  // counts of the tiles add up
+    EXPECT_EQ(sum.faces, one.faces * rects.size());
+}
+
+struct Provoking {
+    rl::mat4 vp;
+    using Varyings = float;
+    using Flat = float;
+    ClipVertex<float, float> vertex(const MeshCorner& c) const {
+        return {vp * rl::extend(c.position(), 1.0f), 0.0f, static_cast<float>(c.corner + 1)};
+    }
+    float fragment(const Fragment<float, float>& f) const { return f.flat(); }
+};
+
+TEST(Pipeline, FlatValuesComeFromTheFacesFirstVertexEvenWhenClipped) {
+    // A floor running from behind the eye to far in front: the near plane cuts it.
+    rl::Mesh floor;
+    floor.positions = {{-5, -1, 5}, {5, -1, 5}, {0, -1, -20}};
+    floor.faces.push_back({});
+    for (int k = 0; k < 3; ++k) floor.faces[0].corners[static_cast<std::size_t>(k)].position = k;
+    Camera camera;
+    camera.eye = {0, 0, 0};
+    camera.target = {0, -0.2f, -1};
+    camera.near = 0.1f;
+    camera.far = 50;
+    RenderTarget<float> target(40, 30, {}, 0.0f);
+    const PipelineCounts counts =
+        draw(MeshView(floor), Provoking{view_projection(camera, 4.0f / 3.0f)}, target);
+    EXPECT_EQ(counts.clipped, 1u);
+    EXPECT_GT(counts.fragments, 100u);
+    for (float v : target.colour().pixels()) EXPECT_TRUE(v == 0.0f || v == 1.0f) << v;
+}
+
+TEST(Pipeline, VaryingsArithmeticCoversEveryMember) {
+    struct Three {
+        rl::vec3 a;
+        float b;
+        rl::vec2 c;
+    };
+    const Three x{{1, 2, 3}, 4, {5, 6}}, y{{10, 20, 30}, 40, {50, 60}}, z{{0, 0, 1}, 0, {0, 2}};
+    const Three m = blend(x, 0.5f, y, 2.0f);
+    EXPECT_EQ(m.a, (rl::vec3{20.5f, 41, 61.5f}));
+    EXPECT_EQ(m.b, 82.0f);
+    EXPECT_EQ(m.c, (rl::vec2{102.5f, 123}));
+    const Three w = weighted<Three>({x, y, z}, {1, 1, 1});
+    EXPECT_EQ(w.c, (rl::vec2{55, 68}));
+    EXPECT_EQ(scaled(x, 2.0f).b, 8.0f);
+}
+
+}  // namespace
