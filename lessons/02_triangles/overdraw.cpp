@@ -1,6 +1,6 @@
 #include "overdraw.hpp"
 
-#include "triangle_measure.hpp"
+#include "02_triangles/lab/triangle_measure.hpp"
 
 namespace triangles {
 

@@ -7,7 +7,7 @@
 #include <set>
 
 #include "01_lines/draw_line.hpp"
-#include "01_lines/line_measure.hpp"
+#include "01_lines/lab/line_measure.hpp"
 #include "01_lines/wireframe.hpp"
 
 namespace {

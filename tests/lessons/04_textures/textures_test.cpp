@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "04_textures/footprint.hpp"
+#include "04_textures/lab/footprint.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/image_metrics.hpp"
 #include "rasterlab/mesh.hpp"

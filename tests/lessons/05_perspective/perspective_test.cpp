@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "05_perspective/ray_truth.hpp"
+#include "05_perspective/lab/ray_truth.hpp"
 #include "05_perspective/scene.hpp"
 #include "rasterlab/image_metrics.hpp"
 

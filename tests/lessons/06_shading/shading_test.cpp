@@ -10,7 +10,7 @@
 
 #include "03_zbuffer/hidden_surfaces.hpp"
 #include "06_shading/scene.hpp"
-#include "06_shading/sphere_truth.hpp"
+#include "06_shading/lab/sphere_truth.hpp"
 #include "rasterlab/texture_files.hpp"
 #include "rasterlab/transform.hpp"
 

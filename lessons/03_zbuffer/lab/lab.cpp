@@ -8,11 +8,11 @@
 #include <chrono>
 #include <cstdio>
 
-#include "hsr_scenes.hpp"
+#include "03_zbuffer/hsr_scenes.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "zfight.hpp"
+#include "03_zbuffer/zfight.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "raster.hpp"
+#include "02_triangles/raster.hpp"
 #include "rasterlab/image.hpp"
 
 namespace triangles {

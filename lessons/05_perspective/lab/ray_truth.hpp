@@ -11,7 +11,7 @@
 #include <optional>
 #include <vector>
 
-#include "pipeline.hpp"
+#include "05_perspective/pipeline.hpp"
 
 namespace perspective {
 

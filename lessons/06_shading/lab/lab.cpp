@@ -8,11 +8,10 @@
 
 #include <cstdio>
 
-#include "03_zbuffer/hidden_surfaces.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "shaders.hpp"
+#include "06_shading/shaders.hpp"
 #include "sphere_truth.hpp"
 
 namespace {

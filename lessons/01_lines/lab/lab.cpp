@@ -6,7 +6,7 @@
 
 #include <cstdio>
 
-#include "draw_line.hpp"
+#include "01_lines/draw_line.hpp"
 #include "line_measure.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"

@@ -11,14 +11,13 @@
 #include <cstdio>
 #include <numbers>
 
-#include "03_zbuffer/hidden_surfaces.hpp"
-#include "05_perspective/ray_truth.hpp"
+#include "05_perspective/lab/ray_truth.hpp"
 #include "globe_relief.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/texture_files.hpp"
-#include "scene.hpp"
+#include "07_normal_mapping/scene.hpp"
 #include "tinyrenderer_style.hpp"
 
 namespace {

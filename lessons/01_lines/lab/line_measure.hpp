@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "line_methods.hpp"
+#include "01_lines/line_methods.hpp"
 
 namespace lines {
 

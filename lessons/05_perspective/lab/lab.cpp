@@ -16,7 +16,7 @@
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/texture_files.hpp"
 #include "ray_truth.hpp"
-#include "scene.hpp"
+#include "05_perspective/scene.hpp"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <numbers>
 
-#include "line_clip.hpp"
+#include "01_lines/line_clip.hpp"
 #include "rasterlab/random.hpp"
 
 namespace lines {

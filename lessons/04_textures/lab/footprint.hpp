@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "sampling.hpp"
-#include "textured.hpp"
+#include "04_textures/sampling.hpp"
+#include "04_textures/textured.hpp"
 
 namespace textures {
 

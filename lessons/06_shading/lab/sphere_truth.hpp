@@ -10,8 +10,8 @@
 #pragma once
 
 #include "05_perspective/camera.hpp"
-#include "colour.hpp"
-#include "lighting.hpp"
+#include "06_shading/colour.hpp"
+#include "06_shading/lighting.hpp"
 #include "rasterlab/image.hpp"
 #include "rasterlab/mesh.hpp"
 
