@@ -7,7 +7,7 @@
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "scene.hpp"
-#include "view_options.hpp"
+#include "view_cli.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{

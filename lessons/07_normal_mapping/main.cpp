@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "05_perspective/view_options.hpp"
+#include "05_perspective/view_cli.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "scene.hpp"

@@ -1,0 +1,39 @@
+#include "view_cli.hpp"
+
+namespace perspective {
+
+namespace {
+
+// --eye, --target, --up: three finite numbers each.
+CLI::Option* add_point_option(CLI::App& app, const std::string& flag, std::vector<float>& point,
+                              const std::string& what) {
+    return app.add_option(flag, point, what + ", x y z")->expected(3)->check(rl::finite_number());
+}
+
+}  // namespace
+
+void add_view_options(CLI::App& app, ViewOptions& view, const std::string& default_scene) {
+    app.add_option("-m,--model", view.models,
+                   "OBJ file to draw, as stored (repeat for several); default: " + default_scene);
+    add_point_option(app, "--eye", view.eye, "Camera position (default: framing the scene)");
+    add_point_option(app, "--target", view.target, "Point looked at (default: the scene's centre)");
+    add_point_option(app, "--up", view.up, "Up direction")->capture_default_str();
+    app.add_option("--fov", view.camera.fov_y, "Vertical field of view, degrees (0 to 180)")
+        ->check(rl::finite_number())
+        ->capture_default_str();
+    app.add_option("--near", view.camera.near,
+                   "Near plane distance (default: just in front of the scene)")
+        ->check(rl::finite_number())
+        ->each([&view](const std::string&) { view.near_given = true; });
+    app.add_option("--far", view.camera.far, "Far plane distance (default: just behind the scene)")
+        ->check(rl::finite_number())
+        ->each([&view](const std::string&) { view.far_given = true; });
+    rl::add_light_option(app, view.light);
+}
+
+rl::vec3 light_direction(const ViewOptions& view) {
+    rl::check_direction("--light", view.light);
+    return {view.light[0], view.light[1], view.light[2]};
+}
+
+}  // namespace perspective

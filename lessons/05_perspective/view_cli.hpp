@@ -1,0 +1,25 @@
+// The command-line options every lesson program from 05 on shares, spelled
+// once: --model (repeatable), --eye, --target, --up, --fov, --near, --far
+// and --light, filling a ViewOptions (view_options.hpp). Only the programs
+// link this (and CLI11); the lessons' libraries do not.
+//
+//   perspective::ViewOptions view;
+//   perspective::add_view_options(app, view, "floor, crate and globe from obj/");
+//   CLI11_PARSE(app, argc, argv);
+//   const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+#pragma once
+
+#include <string>
+
+#include "rasterlab/cli.hpp"
+#include "view_options.hpp"
+
+namespace perspective {
+
+// `default_scene` says in --help what runs without --model.
+void add_view_options(CLI::App& app, ViewOptions& view, const std::string& default_scene);
+
+// --light as a direction; throws std::invalid_argument for 0 0 0.
+rl::vec3 light_direction(const ViewOptions& view);
+
+}  // namespace perspective
