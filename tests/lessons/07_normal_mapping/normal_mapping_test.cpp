@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "05_perspective/lab/tile_check.hpp"
+#include "05_perspective/view_options.hpp"
 #include "07_normal_mapping/scene.hpp"
 
 namespace {
@@ -143,6 +145,21 @@ TEST(NormalMappingTest, AModelWithoutUvsIgnoresItsMapsWithAWarning) {
         warned |= w.find("no texture coordinates") != std::string::npos;
     EXPECT_TRUE(warned);
     std::filesystem::remove_all(dir);
+}
+
+TEST(NormalMappingTest, DefaultSceneTileByTileEqualsOneDraw) {
+    std::vector<std::string> warnings;
+    const std::vector<MappedModel> models = default_scene(TangentMethod::split, warnings);
+    perspective::Box box;
+    for (const MappedModel& m : models)
+        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
+    const perspective::Camera camera = perspective::resolve_camera({}, box, 1.5f);
+    EXPECT_TRUE(
+        perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
+            RenderOptions options;
+            options.pipeline.tile = tile;
+            render(models, camera, options, frame);
+        }));
 }
 
 }  // namespace
