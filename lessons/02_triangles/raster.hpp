@@ -1,7 +1,7 @@
 // Lesson 02's three ways to fill a triangle, behind one enum. Each calls
-// `shade(x, y, barycentric)` once for every pixel it covers; barycentric
+// `fragment_stage(x, y, barycentric)` once for every pixel it covers; barycentric
 // holds the weights of the three vertices at the pixel's centre. Later
-// lessons pass their own `shade` (depth test, texturing, ...) instead of
+// lessons pass their own fragment stage (depth test, texturing, ...) instead of
 // copying a rasterizer. Derivations: docs/02_triangles.md.
 //
 //   triangles::rasterize(triangles::RasterMethod::edge, {{a, b, c}}, width, height,
@@ -42,33 +42,35 @@ inline const char* name(RasterMethod value) {
 // Fills the triangle with the chosen method. Returns false when the method
 // refused the triangle: a NaN or infinite vertex, or one farther than
 // kMaxCoordinate (2^22 pixels) from the origin. Every method keeps its
-// calls to `shade` inside `rect` for every input, and gives a pixel the same
+// calls to `fragment_stage` inside `rect` for every input, and gives a pixel the same
 // weights whatever rectangle it is drawn through (so tiles add up to the
 // whole image, bit for bit).
-template <class Shade>
-bool rasterize(RasterMethod method, const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
+template <class FragmentStage>
+bool rasterize(RasterMethod method, const ScreenTriangle& t, const PixelRect& rect,
+               FragmentStage&& fragment_stage) {
     switch (method) {
         case RasterMethod::scanline:
-            return rasterize_scanline(t, rect, shade);
+            return rasterize_scanline(t, rect, fragment_stage);
         case RasterMethod::bbox:
-            return rasterize_bbox(t, rect, shade);
+            return rasterize_bbox(t, rect, fragment_stage);
         case RasterMethod::edge:
-            return rasterize_edge(t, rect, shade);
+            return rasterize_edge(t, rect, fragment_stage);
     }
     return false;
 }
 
 // The weights `method` gives pixel (x, y) of the triangle (wherever the
-// pixel lies, inside or not): exactly those it hands to `shade`.
+// pixel lies, inside or not): exactly those it hands to `fragment_stage`.
 inline rl::vec3 weights_at(RasterMethod method, const ScreenTriangle& t, int x, int y) {
     if (method == RasterMethod::edge) return edge_weights_at(t, x, y);
     return barycentric(t, {x + 0.5f, y + 0.5f}, signed_area2(t));
 }
 
 // The whole image: {0, 0, width, height}.
-template <class Shade>
-bool rasterize(RasterMethod method, const ScreenTriangle& t, int width, int height, Shade&& shade) {
-    return rasterize(method, t, PixelRect{0, 0, width, height}, shade);
+template <class FragmentStage>
+bool rasterize(RasterMethod method, const ScreenTriangle& t, int width, int height,
+               FragmentStage&& fragment_stage) {
+    return rasterize(method, t, PixelRect{0, 0, width, height}, fragment_stage);
 }
 
 }  // namespace triangles

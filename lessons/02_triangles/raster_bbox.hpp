@@ -9,8 +9,9 @@
 namespace triangles {
 
 // [doc:raster-bbox]
-template <class Shade>
-bool rasterize_bbox(const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
+template <class FragmentStage>
+bool rasterize_bbox(const ScreenTriangle& t, const PixelRect& rect,
+                    FragmentStage&& fragment_stage) {
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;  // degenerate: covers nothing
@@ -27,16 +28,17 @@ bool rasterize_bbox(const ScreenTriangle& t, const PixelRect& rect, Shade&& shad
             const rl::vec3 bary{rl::cross(t.v[2] - t.v[1], p - t.v[1]) / area,
                                 rl::cross(t.v[0] - t.v[2], p - t.v[2]) / area,
                                 rl::cross(t.v[1] - t.v[0], p - t.v[0]) / area};
-            if (bary.x >= 0 && bary.y >= 0 && bary.z >= 0) shade(x, y, bary);
+            if (bary.x >= 0 && bary.y >= 0 && bary.z >= 0) fragment_stage(x, y, bary);
         }
     return true;
 }
 // [/doc:raster-bbox]
 
 // The whole image: {0, 0, width, height}.
-template <class Shade>
-bool rasterize_bbox(const ScreenTriangle& t, int width, int height, Shade&& shade) {
-    return rasterize_bbox(t, PixelRect{0, 0, width, height}, shade);
+template <class FragmentStage>
+bool rasterize_bbox(const ScreenTriangle& t, int width, int height,
+                    FragmentStage&& fragment_stage) {
+    return rasterize_bbox(t, PixelRect{0, 0, width, height}, fragment_stage);
 }
 
 }  // namespace triangles

@@ -35,8 +35,9 @@ inline bool is_top_left(FixedPoint a, FixedPoint b) {
 // [/doc:top-left]
 
 // [doc:raster-edge]
-template <class Shade>
-bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
+template <class FragmentStage>
+bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
+                    FragmentStage&& fragment_stage) {
     if (!within_raster_range(t)) return false;  // |x|, |y| <= 2^22: the products fit 62 bits
     FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
     std::int64_t area =
@@ -80,7 +81,7 @@ bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect, Shade&& shad
                 weight[order[0]] = static_cast<float>(w0) * inverse_area;
                 weight[order[1]] = static_cast<float>(w1) * inverse_area;
                 weight[order[2]] = static_cast<float>(w2) * inverse_area;
-                shade(x, y, rl::vec3{weight[0], weight[1], weight[2]});
+                fragment_stage(x, y, rl::vec3{weight[0], weight[1], weight[2]});
             }
             w0 += e[0].step_x, w1 += e[1].step_x, w2 += e[2].step_x;
         }
@@ -118,9 +119,10 @@ inline rl::vec3 edge_weights_at(const ScreenTriangle& t, int x, int y) {
 }
 
 // The whole image: {0, 0, width, height}.
-template <class Shade>
-bool rasterize_edge(const ScreenTriangle& t, int width, int height, Shade&& shade) {
-    return rasterize_edge(t, PixelRect{0, 0, width, height}, shade);
+template <class FragmentStage>
+bool rasterize_edge(const ScreenTriangle& t, int width, int height,
+                    FragmentStage&& fragment_stage) {
+    return rasterize_edge(t, PixelRect{0, 0, width, height}, fragment_stage);
 }
 
 }  // namespace triangles

@@ -17,8 +17,9 @@ inline rl::vec3 barycentric(const ScreenTriangle& t, rl::vec2 p, float area) {
 }
 
 // [doc:raster-scanline]
-template <class Shade>
-bool rasterize_scanline(const ScreenTriangle& t, const PixelRect& rect, Shade&& shade) {
+template <class FragmentStage>
+bool rasterize_scanline(const ScreenTriangle& t, const PixelRect& rect,
+                        FragmentStage&& fragment_stage) {
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;
@@ -43,7 +44,7 @@ bool rasterize_scanline(const ScreenTriangle& t, const PixelRect& rect, Shade&& 
             const PixelRange columns = centres_between(left, right, rect.x0, rect.x1);
             for (int x = columns.first; x <= columns.last; ++x)
                 if (x + 0.5f < right)  // half-open at the right
-                    shade(x, y, barycentric(t, {x + 0.5f, yc}, area));
+                    fragment_stage(x, y, barycentric(t, {x + 0.5f, yc}, area));
         }
     };
     if (mid.y > lo.y) fill_rows(lo.y, mid.y, lo, mid);  // flat top (or the whole, if mid = hi)
@@ -53,9 +54,10 @@ bool rasterize_scanline(const ScreenTriangle& t, const PixelRect& rect, Shade&& 
 // [/doc:raster-scanline]
 
 // The whole image: {0, 0, width, height}.
-template <class Shade>
-bool rasterize_scanline(const ScreenTriangle& t, int width, int height, Shade&& shade) {
-    return rasterize_scanline(t, PixelRect{0, 0, width, height}, shade);
+template <class FragmentStage>
+bool rasterize_scanline(const ScreenTriangle& t, int width, int height,
+                        FragmentStage&& fragment_stage) {
+    return rasterize_scanline(t, PixelRect{0, 0, width, height}, fragment_stage);
 }
 
 }  // namespace triangles

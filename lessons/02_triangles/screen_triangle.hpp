@@ -40,7 +40,7 @@ inline bool within_raster_range(const ScreenTriangle& t) {
 }
 
 // A vertex attribute (depth, texture coordinates, ...) at a pixel, from the
-// barycentric weights the rasterizers hand to the per-pixel step.
+// barycentric weights the rasterizers hand to the fragment stage.
 template <class T>
 T interpolate(rl::vec3 weights, const T& a0, const T& a1, const T& a2) {
     return a0 * weights.x + a1 * weights.y + a2 * weights.z;

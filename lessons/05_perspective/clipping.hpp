@@ -56,7 +56,7 @@ struct ClipPlanes {
 ClipPlanes clip_planes(ClipMode mode, int width, int height);
 
 // A convex polygon: a triangle cut by k planes has at most 3 + k vertices.
-template <Varyings V>
+template <Interpolable V>
 struct ClipPolygon {
     std::array<ClipVertex<V>, 9> vertices;
     int size = 0;
@@ -67,7 +67,7 @@ struct ClipPolygon {
 // where an edge crosses it, add the crossing. The crossing's parameter t
 // comes from the signed distances d = dot(plane, p), which are linear along
 // the edge in clip space.
-template <Varyings V>
+template <Interpolable V>
 ClipPolygon<V> clip_against(const ClipPolygon<V>& in, ClipPlane plane) {
     ClipPolygon<V> out;
     for (int i = 0; i < in.size; ++i) {
@@ -102,7 +102,7 @@ inline bool finite(const rl::vec4& p) {
 // The triangle cut against every plane of the set; empty (size < 3) when
 // nothing of it is inside, or when a coordinate is NaN or infinite (such a
 // vertex has no place in any plane's half-space).
-template <Varyings V>
+template <Interpolable V>
 ClipPolygon<V> clip_triangle(const std::array<ClipVertex<V>, 3>& triangle,
                              const ClipPlanes& planes) {
     ClipPolygon<V> polygon;

@@ -38,7 +38,7 @@ int main(int argc, char** argv) {
         options.light = perspective::light_direction(view);
         options.lighting = !no_light;
         std::vector<std::string> warnings;
-        std::vector<perspective::Model> models;
+        std::vector<perspective::TexturedModel> models;
         if (view.models.empty()) models = perspective::default_scene(warnings);
         for (const std::string& path : view.models)  // as stored: the identity model matrix
             models.push_back(perspective::load_model(path, rl::mat4::identity(), warnings));

@@ -135,14 +135,14 @@ template <class P>
 using FlatOf = typename ProgramTraits<P>::Flat;
 
 template <class P, class Corner>
-concept Program = Varyings<typename P::Varyings> && requires(const P& p, const Corner& c) {
+concept Program = Interpolable<typename P::Varyings> && requires(const P& p, const Corner& c) {
     { p.vertex(c) } -> std::same_as<ClipVertex<typename P::Varyings, FlatOf<P>>>;
 };
 
 // [doc:triangle-setup]
 // The per-triangle constants the per-pixel work needs, computed once after
 // the divide and the viewport (a GPU's "triangle setup").
-template <Varyings V, class F = NoFlat>
+template <Interpolable V, class F = NoFlat>
 struct TriangleSetup {
     rl::vec3 window[3];  // x, y in pixels, z the window depth in [0, 1]
     V vertex[3];         // the varyings at the three vertices
@@ -160,7 +160,7 @@ struct TriangleSetup {
 };
 
 // Divide, viewport, and the constants of one triangle of clip-space vertices.
-template <Varyings V, class F>
+template <Interpolable V, class F>
 TriangleSetup<V, F> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c,
                            const F& flat, int face, Interpolation interpolation, int width,
                            int height) {
@@ -198,7 +198,7 @@ TriangleSetup<V, F> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const
 // [/doc:triangle-setup]
 
 // One pixel (one sample of it) reaching the fragment stage.
-template <Varyings V, class F = NoFlat>
+template <Interpolable V, class F = NoFlat>
 struct Fragment {
     int x, y;
     float depth;
@@ -222,7 +222,7 @@ struct Fragment {
 
 // The fragment at barycentric weights b: perspective-correct varyings are
 // b . (varyings / w) divided by b . (1 / w); affine ones are b . varyings.
-template <Varyings V, class F>
+template <Interpolable V, class F>
 Fragment<V, F> fragment_at(const TriangleSetup<V, F>& t, int x, int y, float z, rl::vec3 b) {
     const V over_w = weighted(t.over_w, b);
     if (!t.perspective_correct) return {x, y, z, over_w, 1.0f, &t};
@@ -245,7 +245,7 @@ bool outside_frustum(const Box& box, const rl::mat4& model_view_projection);
 
 // The face cut against the planes (most faces need no cut and are copied as
 // they are); counts what was cut and what was wholly outside.
-template <Varyings V, class F>
+template <Interpolable V, class F>
 ClipPolygon<V> clip_face(const std::array<ClipVertex<V, F>, 3>& v, const ClipPlanes& planes,
                          PipelineCounts& counts) {
     const std::array<ClipVertex<V>, 3> corners = {ClipVertex<V>{v[0].position, v[0].varyings},
@@ -281,7 +281,7 @@ void store(RenderTarget<Pixels...>& target, int column, int y, const Outputs& ou
 // centre, so every sample of a pixel shades alike), and the store. The depth
 // test runs before the fragment stage, unless the program may discard: then
 // only a fragment it keeps writes depth. Returns false if refused.
-template <class P, Varyings V, class F, class... Pixels>
+template <class P, Interpolable V, class F, class... Pixels>
 bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
                         RenderTarget<Pixels...>& target, const PipelineOptions& options,
                         std::size_t& fragments) {

@@ -149,7 +149,7 @@ Pixel average(const Pixel* samples, int count) {
         };
         return {mean(sum[0]), mean(sum[1]), mean(sum[2]), mean(sum[3])};
     } else {
-        static_assert(Varyings<Pixel>, "resolve averages bytes or types made of floats");
+        static_assert(Interpolable<Pixel>, "resolve averages bytes or types made of floats");
         std::array<double, sizeof(Pixel) / sizeof(float)> sum{};
         for (int s = 0; s < count; ++s) {
             const Lanes<Pixel> lanes = std::bit_cast<Lanes<Pixel>>(samples[s]);

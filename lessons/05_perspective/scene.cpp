@@ -6,8 +6,9 @@
 
 namespace perspective {
 
-Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
-                 std::vector<std::string>& warnings, const textures::TexelEncoding* encoding) {
+TexturedModel load_model(const std::filesystem::path& path, const rl::mat4& transform,
+                         std::vector<std::string>& warnings,
+                         const textures::TexelEncoding* encoding) {
     rl::Mesh mesh = rl::load_obj(path, &warnings);
     rl::Texture diffuse = rl::load_texture(mesh, 0, rl::TextureRole::diffuse, warnings);
     std::string texture_name =
@@ -18,8 +19,8 @@ Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
 }
 
 // [doc:default-scene]
-std::vector<Model> default_scene(std::vector<std::string>& warnings) {
-    std::vector<Model> models;
+std::vector<TexturedModel> default_scene(std::vector<std::string>& warnings) {
+    std::vector<TexturedModel> models;
     models.push_back(load_model(rl::project_model("floor"),
                                 rl::compose({.scale = {2.2f, 2.2f, 2.2f}}), warnings));
     models.push_back(load_model(rl::project_model("crate"),  // edge 1.1: its base on y = 0
@@ -34,16 +35,16 @@ std::vector<Model> default_scene(std::vector<std::string>& warnings) {
 }
 // [/doc:default-scene]
 
-Box scene_bounds(const std::vector<Model>& models) {
+Box scene_bounds(const std::vector<TexturedModel>& models) {
     Box box;
-    for (const Model& model : models) box.add(bounds(model.mesh, model.transform));
+    for (const TexturedModel& model : models) box.add(bounds(model.mesh, model.transform));
     return box;
 }
 
 namespace {
 
 // Lesson 02's flat Lambert term of every face, in world space.
-std::vector<float> face_light(const Model& model, const RenderOptions& options) {
+std::vector<float> face_light(const TexturedModel& model, const RenderOptions& options) {
     std::vector<float> light(model.mesh.faces.size(), 1.0f);
     if (!options.lighting) return light;
     for (std::size_t i = 0; i < light.size(); ++i) {
@@ -81,12 +82,12 @@ rl::Rgba TexturedProgram::fragment(const Fragment<rl::vec2>& f) const {
 // [/doc:textured-program]
 
 // [doc:render-model]
-PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
+PipelineCounts render(const std::vector<TexturedModel>& models, const Camera& camera,
                       const RenderOptions& options, ColourTarget& frame) {
     const rl::mat4 view_proj = view_projection(
         camera, static_cast<float>(frame.width()) / static_cast<float>(frame.height()));
     PipelineCounts counts;
-    for (const Model& model : models) {
+    for (const TexturedModel& model : models) {
         const rl::mat4 mvp = view_proj * model.transform;
         if (options.cull_objects && outside_frustum(model.box, mvp)) {
             ++counts.objects_culled;

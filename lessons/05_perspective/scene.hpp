@@ -3,7 +3,7 @@
 // pipeline. Texture level of detail comes from each pixel's UV derivatives
 // (or, to compare, lesson 04's per-triangle estimate).
 //
-//   std::vector<perspective::Model> models = perspective::default_scene(warnings);
+//   std::vector<perspective::TexturedModel> models = perspective::default_scene(warnings);
 //   perspective::Camera camera = perspective::frame_box(perspective::scene_bounds(models), 50, 1);
 //   perspective::ColourTarget frame = perspective::colour_target(800, 800);
 //   perspective::render(models, camera, {}, frame);
@@ -20,7 +20,7 @@
 
 namespace perspective {
 
-struct Model {
+struct TexturedModel {
     rl::Mesh mesh;
     rl::mat4 transform;  // model to world
     Box box;             // around the mesh, in model space
@@ -31,15 +31,15 @@ struct Model {
 // Loads an OBJ and its diffuse texture (a plain one, with a warning, when it
 // has none), placed by `transform`; the mip chain averages in `encoding`'s
 // values (lesson 06 passes sRGB's; nullptr: the bytes).
-Model load_model(const std::filesystem::path& path, const rl::mat4& transform,
-                 std::vector<std::string>& warnings,
-                 const textures::TexelEncoding* encoding = nullptr);
+TexturedModel load_model(const std::filesystem::path& path, const rl::mat4& transform,
+                         std::vector<std::string>& warnings,
+                         const textures::TexelEncoding* encoding = nullptr);
 
 // The program's default: the floor (scaled 2.2x), the crate standing on it and
 // the globe beside it, all from obj/.
-std::vector<Model> default_scene(std::vector<std::string>& warnings);
+std::vector<TexturedModel> default_scene(std::vector<std::string>& warnings);
 
-Box scene_bounds(const std::vector<Model>& models);
+Box scene_bounds(const std::vector<TexturedModel>& models);
 
 // Where the mip level comes from: each pixel's own UV derivatives (exact
 // under perspective), or one affine estimate per triangle as in lesson 04.
@@ -76,7 +76,7 @@ struct TexturedProgram {
 };
 
 // Draws every model into the frame (width / height is the aspect ratio).
-PipelineCounts render(const std::vector<Model>& models, const Camera& camera,
+PipelineCounts render(const std::vector<TexturedModel>& models, const Camera& camera,
                       const RenderOptions& options, ColourTarget& frame);
 
 }  // namespace perspective

@@ -22,16 +22,17 @@ namespace perspective {
 // aligned as a float (a member of another type, an int say, would be added
 // as if it were a float: keep flat data in a program's Flat type instead).
 template <class V>
-concept Varyings = std::default_initializable<V> && std::is_trivially_copyable_v<V> && sizeof(V) %
-                           sizeof(float) ==
-                       0 &&
-                   alignof(V) == alignof(float);
+concept Interpolable = std::default_initializable<V> && std::is_trivially_copyable_v<V> &&
+                               sizeof(V) %
+                               sizeof(float) ==
+                           0 &&
+                       alignof(V) == alignof(float);
 
-template <Varyings V>
+template <Interpolable V>
 using Lanes = std::array<float, sizeof(V) / sizeof(float)>;
 
 // a * s + b * t, member by member.
-template <Varyings V>
+template <Interpolable V>
 V blend(const V& a, float s, const V& b, float t) {
     Lanes<V> x = std::bit_cast<Lanes<V>>(a);
     const Lanes<V> y = std::bit_cast<Lanes<V>>(b);
@@ -40,7 +41,7 @@ V blend(const V& a, float s, const V& b, float t) {
 }
 
 // a * s.
-template <Varyings V>
+template <Interpolable V>
 V scaled(const V& a, float s) {
     Lanes<V> x = std::bit_cast<Lanes<V>>(a);
     for (float& lane : x) lane *= s;
@@ -48,7 +49,7 @@ V scaled(const V& a, float s) {
 }
 
 // v0 * w.x + v1 * w.y + v2 * w.z: the varyings at barycentric weights w.
-template <Varyings V>
+template <Interpolable V>
 V weighted(const V (&v)[3], rl::vec3 w) {
     Lanes<V> x = std::bit_cast<Lanes<V>>(v[0]);
     const Lanes<V> y = std::bit_cast<Lanes<V>>(v[1]), z = std::bit_cast<Lanes<V>>(v[2]);
@@ -61,7 +62,7 @@ V weighted(const V (&v)[3], rl::vec3 w) {
 // triangle (`Flat`, taken from its first vertex: see pipeline.hpp).
 struct NoFlat {};
 
-template <Varyings V, class Flat = NoFlat>
+template <Interpolable V, class Flat = NoFlat>
 struct ClipVertex {
     rl::vec4 position;
     V varyings;

@@ -20,7 +20,8 @@ int main(int argc, char** argv) {
     float shininess = options.lighting.shininess;
     perspective::add_view_options(app, view, "floor, globe and torus from obj/");
     rl::add_image_options(app, image_options);
-    rl::add_method_option(app, "--shading", options.model, shading::kModels, "Shading model");
+    rl::add_method_option(app, "--shading", options.model, shading::kShadingModels,
+                          "Shading model");
     rl::add_method_option(app, "--weighting", weighting, shading::kWeightings,
                           "Vertex normals, where the OBJ has none, averaged by");
     app.add_option("--shininess", shininess, "Specular exponent (0: highlight everywhere lit)")

@@ -32,7 +32,7 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
                             const perspective::Camera& camera, const Lighting<float>& lighting,
                             const textures::SamplerState& sampler, bool cull_objects,
                             perspective::PipelineCounts& counts) {
-    const perspective::Model& m = lit.model;
+    const perspective::TexturedModel& m = lit.model;
     const rl::mat4 mvp = view_projection * m.transform;
     if (cull_objects && perspective::outside_frustum(m.box, mvp)) {
         ++counts.objects_culled;

@@ -12,7 +12,7 @@
 namespace shading {
 
 struct LitModel {
-    perspective::Model model;
+    perspective::TexturedModel model;
     std::vector<rl::vec3> normals;     // 3 per face
     std::size_t computed_normals = 0;  // corners the OBJ gave no (usable) normal for
 };
@@ -29,7 +29,7 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
 struct ShadingOptions {
     perspective::PipelineOptions pipeline;
     bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
-    Model model = Model::blinn_phong;
+    ShadingModel model = ShadingModel::blinn_phong;
     Output output = Output::srgb;
     Lighting<float> lighting = default_lighting(rl::vec3{0.3f, 0.5f, 1.0f});
     textures::Filter filter = textures::Filter::trilinear;

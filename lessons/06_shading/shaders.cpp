@@ -13,17 +13,17 @@ Reflection<float> light_at(const Uniforms& u, rl::vec3 world_position, rl::vec3 
                       Specular::blinn_phong);
 }
 
-perspective::PipelineCounts draw_model(Model model, const Surface& surface, const Uniforms& u,
-                                       perspective::ColourTarget& target,
+perspective::PipelineCounts draw_model(ShadingModel model, const Surface& surface,
+                                       const Uniforms& u, perspective::ColourTarget& target,
                                        const perspective::PipelineOptions& options, Output output) {
     switch (model) {
-        case Model::flat:
+        case ShadingModel::flat:
             return draw(surface, FlatShader{u}, target, options, output);
-        case Model::gouraud:
+        case ShadingModel::gouraud:
             return draw(surface, GouraudShader{u}, target, options, output);
-        case Model::phong:
+        case ShadingModel::phong:
             return draw(surface, PhongShader{u, Specular::phong}, target, options, output);
-        case Model::blinn_phong:
+        case ShadingModel::blinn_phong:
             return draw(surface, PhongShader{u, Specular::blinn_phong}, target, options, output);
     }
     return {};

@@ -15,21 +15,21 @@
 
 namespace shading {
 
-enum class Model { flat, gouraud, phong, blinn_phong };
-inline constexpr std::array<rl::Named<Model>, 4> kModelNames = {
-    {{Model::flat, "flat"},
-     {Model::gouraud, "gouraud"},
-     {Model::phong, "phong"},
-     {Model::blinn_phong, "blinn-phong"}}};
-inline constexpr std::array<Model, 4> kModels = rl::values_of(kModelNames);
-inline const char* name(Model value) {
-    return rl::name_in(kModelNames, value);
+enum class ShadingModel { flat, gouraud, phong, blinn_phong };
+inline constexpr std::array<rl::Named<ShadingModel>, 4> kShadingModelNames = {
+    {{ShadingModel::flat, "flat"},
+     {ShadingModel::gouraud, "gouraud"},
+     {ShadingModel::phong, "phong"},
+     {ShadingModel::blinn_phong, "blinn-phong"}}};
+inline constexpr std::array<ShadingModel, 4> kShadingModels = rl::values_of(kShadingModelNames);
+inline const char* name(ShadingModel value) {
+    return rl::name_in(kShadingModelNames, value);
 }
 
 // What every shader of this lesson reads and no vertex changes.
 struct Uniforms {
-    rl::mat4 model;    // model to world
-    rl::mat3 normals;  // normal_matrix(model)
+    rl::mat4 model_matrix;   // model to world
+    rl::mat3 normal_matrix;  // shading::normal_matrix(model_matrix)
     rl::mat4 model_view_projection;
     rl::vec3 eye;  // world space
     Lighting<float> lighting;
@@ -37,8 +37,8 @@ struct Uniforms {
     textures::SamplerState sampler;
     rl::vec3 colour{0.8f, 0.8f, 0.8f};  // linear albedo without a texture
 
-    rl::vec3 world(rl::vec3 p) const { return (model * rl::extend(p, 1.0f)).xyz(); }
-    rl::vec3 world_normal(rl::vec3 n) const { return rl::normalize(normals * n); }
+    rl::vec3 world(rl::vec3 p) const { return (model_matrix * rl::extend(p, 1.0f)).xyz(); }
+    rl::vec3 world_normal(rl::vec3 n) const { return rl::normalize(normal_matrix * n); }
     rl::vec4 clip(rl::vec3 p) const { return model_view_projection * rl::extend(p, 1.0f); }
     // The diffuse colour at a pixel: the texture (mip level from the pixel's
     // UV derivatives, lesson 05) or the plain colour.
@@ -119,8 +119,8 @@ struct PhongShader {
 // [/doc:phong-shader]
 
 // Draws the surface with the chosen shading model.
-perspective::PipelineCounts draw_model(Model model, const Surface& surface, const Uniforms& u,
-                                       perspective::ColourTarget& target,
+perspective::PipelineCounts draw_model(ShadingModel model, const Surface& surface,
+                                       const Uniforms& u, perspective::ColourTarget& target,
                                        const perspective::PipelineOptions& options, Output output);
 
 }  // namespace shading

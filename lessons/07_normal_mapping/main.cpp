@@ -23,8 +23,9 @@ int main(int argc, char** argv) {
                           "Normal map to use");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
                           "Tangent frames");
-    rl::add_method_option(app, "--shading", options.specular, shading::kSpeculars,
-                          "Shading model (per pixel; the highlight Phong's or Blinn's)");
+    rl::add_method_option(
+        app, "--specular", options.specular, shading::kSpeculars,
+        "The highlight, Phong's or Blinn's (lesson 06; lit per pixel either way)");
     CLI11_PARSE(app, argc, argv);
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;

@@ -60,7 +60,7 @@ struct NormalMappedShader {
                                        static_cast<std::size_t>(in.corner)];
         // A tangent is a direction along the surface: it transforms like a
         // position difference (by the model's 3x3), not like a normal.
-        const rl::vec3 world_tangent = (u.model * rl::vec4{t.x, t.y, t.z, 0}).xyz();
+        const rl::vec3 world_tangent = (u.model_matrix * rl::vec4{t.x, t.y, t.z, 0}).xyz();
         return {u.clip(in.position()),
                 {u.world(in.position()), u.world_normal(in.normal()), world_tangent, t.w * mirror,
                  in.uv()}};

@@ -11,12 +11,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "05_perspective/scene.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/texture_files.hpp"
 #include "ray_truth.hpp"
-#include "05_perspective/scene.hpp"
 
 namespace {
 
@@ -172,7 +172,7 @@ ClippingScene floor_scene() {
 // 128 triangles) or as one quad of 2 triangles with the same mapping.
 struct LodScene {
     std::string name;
-    std::vector<Model> models;
+    std::vector<TexturedModel> models;
     Camera camera;
     int size;
     rl::Image truth;

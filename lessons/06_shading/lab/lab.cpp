@@ -8,10 +8,10 @@
 
 #include <cstdio>
 
+#include "06_shading/shaders.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "06_shading/shaders.hpp"
 #include "sphere_truth.hpp"
 
 namespace {
@@ -26,7 +26,7 @@ struct Setup {
 };
 
 struct Case {
-    Model model;
+    ShadingModel model;
     int segments;
     rl::Mesh mesh;
     std::vector<rl::vec3> normals;
@@ -58,8 +58,8 @@ void average_normals(benchmark::State& state, const rl::Mesh* mesh, Weighting w)
     for (auto _ : state) benchmark::DoNotOptimize(vertex_normals(*mesh, w).data());
 }
 
-Specular specular_of(Model m) {
-    return m == Model::phong ? Specular::phong : Specular::blinn_phong;
+Specular specular_of(ShadingModel m) {
+    return m == ShadingModel::phong ? Specular::phong : Specular::blinn_phong;
 }
 
 }  // namespace
@@ -78,7 +78,7 @@ int main(int argc, char** argv) {
         const std::vector<int> levels =
             options.quick ? std::vector<int>{8, 32} : std::vector<int>{8, 16, 32, 64, 128, 256};
         std::vector<Case> cases;
-        for (Model m : kModels)
+        for (ShadingModel m : kShadingModels)
             for (int n : levels) {
                 Case c{m, n, uv_sphere(n), {}};
                 c.normals = corner_normals(c.mesh, Weighting::angle);
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
             }
         // Linear light against naive, Blinn-Phong on the finest sphere.
         for (Output o : kOutputs) {
-            Case c{Model::blinn_phong, levels.back(), uv_sphere(levels.back()), {}, o};
+            Case c{ShadingModel::blinn_phong, levels.back(), uv_sphere(levels.back()), {}, o};
             c.normals = corner_normals(c.mesh, Weighting::angle);
             cases.push_back(std::move(c));
         }

@@ -264,7 +264,7 @@ TEST(PerspectiveTest, ExtremeFieldsOfViewStillMatchTheRayCastCoverage) {
 // origin, or looking at a huge model: everything drawn is finite and counted.
 TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
     std::vector<std::string> warnings;
-    const std::vector<Model> models = default_scene(warnings);
+    const std::vector<TexturedModel> models = default_scene(warnings);
     Camera camera = frame_box(scene_bounds(models), 50, 1);
     camera.eye = {1.0f, 0.9f, -0.6f};  // the globe's centre
     camera.target = {0, 0.9f, 3};
@@ -283,7 +283,7 @@ TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
 double share_differing_from_origin(float offset) {
     const auto draw = [](float at) {
         std::vector<std::string> warnings;
-        std::vector<Model> models;
+        std::vector<TexturedModel> models;
         models.push_back(load_model(rl::project_model("crate"),
                                     rl::compose({.translation = {at, -at, at}}), warnings));
         const Camera camera = frame_box(scene_bounds(models), 50, 1);
@@ -305,12 +305,12 @@ TEST(PerspectiveTest, ModelFarFromTheOriginLooksTheSameUpToTenThousand) {
 TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
     const auto scene_at_scale = [](float scale) {
         std::vector<std::string> warnings;
-        std::vector<Model> models;
+        std::vector<TexturedModel> models;
         models.push_back(load_model(rl::project_model("crate"),
                                     rl::compose({.scale = {scale, scale, scale}}), warnings));
         return models;
     };
-    const std::vector<Model> big = scene_at_scale(1e15f);
+    const std::vector<TexturedModel> big = scene_at_scale(1e15f);
     const Camera camera = frame_box(scene_bounds(big), 50, 1);
     ASSERT_NO_THROW(check(camera));
     perspective::ColourTarget frame = perspective::colour_target(64, 64);

@@ -136,13 +136,13 @@ struct MaybeReversed {
 
 ColourTarget draw_default_scene(bool reversed) {
     std::vector<std::string> warnings;
-    const std::vector<Model> models = default_scene(warnings);
+    const std::vector<TexturedModel> models = default_scene(warnings);
     const Camera camera = resolve_camera({}, scene_bounds(models), 4.0f / 3.0f);
     const rl::mat4 vp = view_projection(camera, 4.0f / 3.0f);
     const TargetOptions options = with_depth(
         reversed ? depth_state(zbuffer::DepthCompare::greater, 0.0f) : zbuffer::DepthState{});
     ColourTarget frame(160, 120, options, rl::kBackground);
-    for (const Model& m : models) {
+    for (const TexturedModel& m : models) {
         const std::vector<float> light(m.mesh.faces.size(), 1.0f);
         const TexturedProgram program{vp * m.transform, m.texture, {}, LodMethod::pixel, light};
         draw(MeshView(m.mesh, m.transform), MaybeReversed{program, reversed}, frame);
@@ -231,7 +231,7 @@ TEST(Pipeline, SampleCountsOtherThanOneTwoFourEightAreRefused) {
 
 TEST(Pipeline, TileByTileEqualsOneDraw) {
     std::vector<std::string> warnings;
-    const std::vector<Model> models = default_scene(warnings);
+    const std::vector<TexturedModel> models = default_scene(warnings);
     const Camera camera = resolve_camera({}, scene_bounds(models), 1.5f);
     EXPECT_TRUE(tiles_add_up(300, 200, 64, [&](ColourTarget& frame, auto tile) {
         RenderOptions options;

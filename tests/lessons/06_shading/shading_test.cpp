@@ -140,7 +140,7 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     u.lighting.lights.resize(1);
     perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const perspective::PipelineCounts counts = draw_model(
-        Model::blinn_phong, Surface(sphere, normals, mirror), u, frame, {}, Output::srgb);
+        ShadingModel::blinn_phong, Surface(sphere, normals, mirror), u, frame, {}, Output::srgb);
     EXPECT_GT(counts.fragments, 1000u);
     // Lit from +x: the right half is brighter than the left.
     EXPECT_GT(frame.colour().get(44, 32).r, frame.colour().get(20, 32).r + 40);
@@ -247,7 +247,7 @@ TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
             u.colour = {linear_to_srgb(albedo.x), linear_to_srgb(albedo.y),
                         linear_to_srgb(albedo.z)};
         perspective::ColourTarget frame = perspective::colour_target(96, 96);
-        draw_model(Model::blinn_phong, Surface{sphere, normals}, u, frame, {}, o);
+        draw_model(ShadingModel::blinn_phong, Surface{sphere, normals}, u, frame, {}, o);
         error[o == Output::srgb ? 0 : 1] =
             compare_spheres(truth, frame.colour(), rl::kBackground).interior_rmse;
     }
