@@ -218,6 +218,18 @@ struct Fragment {
         return scaled(blend(triangle->d_over_w_dy, 1.0f, varyings, -triangle->d_inverse_w_dy),
                       1 / inverse_w);
     }
+    // The same for one member only (f.d_dx(&Varyings::uv)): a fragment stage
+    // that needs the derivatives of its texture coordinates alone skips the rest.
+    template <class M, class W = V>
+    M d_dx(M W::*member) const {
+        return (triangle->d_over_w_dx.*member + varyings.*member * -triangle->d_inverse_w_dx) *
+               (1 / inverse_w);
+    }
+    template <class M, class W = V>
+    M d_dy(M W::*member) const {
+        return (triangle->d_over_w_dy.*member + varyings.*member * -triangle->d_inverse_w_dy) *
+               (1 / inverse_w);
+    }
 };
 
 // The fragment at barycentric weights b: perspective-correct varyings are

@@ -90,7 +90,8 @@ struct GouraudShader {
         return {u.clip(in.position()), {l.diffuse, l.specular, in.uv()}};
     }
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
-        return u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv) * f.varyings.diffuse +
+        return u.albedo(f.varyings.uv, f.d_dx(&Varyings::uv), f.d_dy(&Varyings::uv)) *
+                   f.varyings.diffuse +
                f.varyings.specular;
     }
 };
@@ -112,7 +113,8 @@ struct PhongShader {
         // normalise it again, or the light dims and the highlight spreads.
         const rl::vec3 n = rl::normalize(f.varyings.normal);
         const rl::vec3 to_eye = rl::normalize(u.eye - f.varyings.position);
-        return reflected(u.lighting, n, to_eye, u.albedo(f.varyings.uv, f.d_dx().uv, f.d_dy().uv),
+        return reflected(u.lighting, n, to_eye,
+                         u.albedo(f.varyings.uv, f.d_dx(&Varyings::uv), f.d_dy(&Varyings::uv)),
                          specular);
     }
 };

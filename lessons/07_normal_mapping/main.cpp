@@ -26,6 +26,13 @@ int main(int argc, char** argv) {
     rl::add_method_option(
         app, "--specular", options.specular, shading::kSpeculars,
         "The highlight, Phong's or Blinn's (lesson 06; lit per pixel either way)");
+    rl::add_method_option(app, "--filter", options.filter, textures::kFilters,
+                          "Texture filter, for every map (lesson 04)");
+    bool naive = false, one_light = false;
+    app.add_flag("--naive", naive,
+                 "Light the sRGB bytes as if they were linear and write the result as it is "
+                 "(what lessons 00-05 did)");
+    app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
     CLI11_PARSE(app, argc, argv);
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
@@ -33,12 +40,15 @@ int main(int argc, char** argv) {
     return rl::guarded_main("07_normal_mapping", [&] {
         rl::check_image_output(output);
         options.lighting = shading::default_lighting(perspective::light_direction(view));
+        if (one_light) options.lighting.lights.resize(1);
+        options.output = naive ? shading::Output::naive : shading::Output::srgb;
         std::vector<std::string> warnings;
         std::vector<normal_mapping::MappedModel> models;
-        if (view.models.empty()) models = normal_mapping::default_scene(tangents, warnings);
+        if (view.models.empty())
+            models = normal_mapping::default_scene(tangents, warnings, options.output);
         for (const std::string& path : view.models)  // as stored: the identity model matrix
-            models.push_back(
-                normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
+            models.push_back(normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents,
+                                                               warnings, options.output));
         rl::print_warnings("07_normal_mapping", warnings);
         perspective::Box box;
         for (const normal_mapping::MappedModel& m : models)

@@ -54,6 +54,7 @@ struct NormalMappedShader {
     };
     // The vertex stage reads the corner's tangent from here (3 per face).
     const std::vector<rl::vec4>* tangents = nullptr;
+    textures::Filter map_filter = textures::Filter::trilinear;  // for the normal and specular maps
 
     perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         const rl::vec4 t = (*tangents)[3 * static_cast<std::size_t>(in.face) +
@@ -86,7 +87,7 @@ struct NormalMappedShader {
 
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
-        const rl::vec2 dx = f.d_dx().uv, dy = f.d_dy().uv;
+        const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         const rl::vec3 n = normal_at(f, dx, dy);
         const shading::Reflection<float> r =
             shading::reflection(u.lighting, n, rl::normalize(u.eye - v.position), specular);
@@ -101,7 +102,7 @@ struct NormalMappedShader {
 
     rl::vec4 sample(const textures::MipChain& map, rl::vec2 uv, rl::vec2 dx, rl::vec2 dy) const {
         textures::SamplerState data;  // bytes as they are: these maps hold data
-        data.filter = textures::Filter::trilinear;
+        data.filter = map_filter;
         return textures::sample(map, uv, {dx, dy}, data);
     }
 };

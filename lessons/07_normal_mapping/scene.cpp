@@ -5,21 +5,23 @@
 namespace normal_mapping {
 
 MappedModel load_mapped_model(const std::filesystem::path& path, const rl::mat4& transform,
-                              TangentMethod method, std::vector<std::string>& warnings) {
-    MappedModel m{shading::load_lit_model(path, transform, shading::Output::srgb,
-                                          shading::Weighting::angle, warnings),
-                  {},
-                  {}};
+                              TangentMethod method, std::vector<std::string>& warnings,
+                              shading::Output output) {
+    MappedModel m{
+        shading::load_lit_model(path, transform, output, shading::Weighting::angle, warnings),
+        {},
+        {}};
     m.tangents = corner_tangents(m.lit.model.mesh, m.lit.normals, method);
     m.maps = load_maps(m.lit.model.mesh, warnings);
     return m;
 }
 
-std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings) {
+std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings,
+                                       shading::Output output) {
     std::vector<MappedModel> models;
     const auto add = [&](const char* name, const rl::Trs& trs) {
         models.push_back(
-            load_mapped_model(rl::project_model(name), rl::compose(trs), method, warnings));
+            load_mapped_model(rl::project_model(name), rl::compose(trs), method, warnings, output));
     };
     add("floor", {.scale = {1.7f, 1.7f, 1.7f}});
     add("globe", {.translation = {-0.75f, 0.9f, -0.2f}, .rotation = rl::axis_angle({0, 1, 0}, 20)});
@@ -33,9 +35,9 @@ perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                    perspective::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
-    textures::SamplerState sampler;  // the diffuse texture: sRGB, trilinear
-    sampler.filter = textures::Filter::trilinear;
-    sampler.encoding = &shading::srgb_texels();
+    textures::SamplerState sampler;  // the diffuse texture: sRGB unless naive
+    sampler.filter = options.filter;
+    sampler.encoding = options.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr;
     perspective::PipelineCounts counts;
     for (const MappedModel& m : models) {
         const std::optional<shading::Placed> p =
@@ -47,8 +49,9 @@ perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                         options.normal_map,
                                         options.specular,
                                         p->surface.view.mirrored ? -1.0f : 1.0f,
-                                        &m.tangents};
-        counts += shading::draw(p->surface, shader, frame, options.pipeline, shading::Output::srgb);
+                                        &m.tangents,
+                                        options.filter};
+        counts += shading::draw(p->surface, shader, frame, options.pipeline, options.output);
     }
     return counts;
 }

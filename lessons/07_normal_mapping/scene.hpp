@@ -16,12 +16,16 @@ struct MappedModel {
     Maps maps;
 };
 
+// The diffuse texture is decoded as sRGB unless the output is naive (as in
+// lesson 06).
 MappedModel load_mapped_model(const std::filesystem::path& path, const rl::mat4& transform,
-                              TangentMethod method, std::vector<std::string>& warnings);
+                              TangentMethod method, std::vector<std::string>& warnings,
+                              shading::Output output = shading::Output::srgb);
 
 // The default: the globe (diffuse, tangent- and object-space normal maps,
 // specular map) and the crate (mirrored UVs on two faces) on the floor.
-std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings);
+std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings,
+                                       shading::Output output = shading::Output::srgb);
 
 struct RenderOptions {
     perspective::PipelineOptions pipeline;
@@ -29,6 +33,8 @@ struct RenderOptions {
     NormalMap normal_map = NormalMap::tangent;
     shading::Specular specular = shading::Specular::blinn_phong;
     shading::Lighting<float> lighting = shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f});
+    textures::Filter filter = textures::Filter::trilinear;  // every map's
+    shading::Output output = shading::Output::srgb;         // naive: the bytes lit as if linear
 };
 
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,

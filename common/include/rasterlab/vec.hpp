@@ -147,14 +147,25 @@ T length(const Vec<N, T>& v) {
     return std::sqrt(dot(v, v));
 }
 
+template <std::size_t N, typename T>
+Vec<N, T> normalize_scaled(const Vec<N, T>& v);
+
 // Unit vector in v's direction; the zero vector stays zero rather than
 // turning into NaNs, so a degenerate normal shows up as black, not garbage.
 // A vector whose squared length overflows (components past 1e19 in float)
 // or underflows (below 1e-19) is first scaled by its largest component.
 template <std::size_t N, typename T>
-Vec<N, T> normalize(const Vec<N, T>& v) {
+inline Vec<N, T> normalize(const Vec<N, T>& v) {
     const T len = length(v);
-    if (len > std::numeric_limits<T>::min() && len <= std::numeric_limits<T>::max()) return v / len;
+    if (len > std::numeric_limits<T>::min() && len <= std::numeric_limits<T>::max()) [[likely]]
+        return v / len;
+    return normalize_scaled(v);  // out of line: the common case above stays small enough to inline
+}
+
+// normalize() for vectors whose length underflows or overflows: scaled by
+// the largest component first.
+template <std::size_t N, typename T>
+[[gnu::noinline]] Vec<N, T> normalize_scaled(const Vec<N, T>& v) {
     T largest{};
     for (std::size_t i = 0; i < N; ++i) largest = std::max(largest, std::abs(v[i]));
     if (!(largest > T{0}) || !(largest <= std::numeric_limits<T>::max())) return v;

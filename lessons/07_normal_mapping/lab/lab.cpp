@@ -4,7 +4,9 @@
 // falls with the tangent-space map's resolution; and, on a plane whose UVs
 // are mirrored down its middle (each face's own frame is exact there), what
 // averaging frames across the mirror line costs. Writes 07_normals.csv,
-// 07_map_size.csv and 07_mirrored.csv.
+// 07_map_size.csv and 07_mirrored.csv; and the speed of a whole frame against
+// a port of tinyrenderer's renderer, this lesson doing the same work and its
+// own (07_speed.csv).
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -12,13 +14,13 @@
 #include <numbers>
 
 #include "05_perspective/lab/ray_truth.hpp"
+#include "07_normal_mapping/scene.hpp"
 #include "globe_relief.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/texture_files.hpp"
-#include "07_normal_mapping/scene.hpp"
-#include "tinyrenderer_style.hpp"
+#include "tinyrenderer_port.hpp"
 
 namespace {
 
@@ -47,15 +49,15 @@ struct NormalProbe {
         return shader.vertex(in);
     }
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
-        return shader.normal_at(f, f.d_dx().uv, f.d_dy().uv);
+        return shader.normal_at(f, f.d_dx(&Varyings::uv), f.d_dy(&Varyings::uv));
     }
 };
 
 rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl::vec4>& tangents,
-                         NormalMap source) {
+                         NormalMap source, textures::Filter filter = textures::Filter::trilinear) {
     perspective::RenderTarget<rl::vec3> normals(g.size, g.size, {}, rl::vec3{NAN, NAN, NAN});
     const NormalProbe p{
-        {g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents}};
+        {g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents, filter}};
     perspective::draw(shading::Surface(g.model.lit.model.mesh, g.model.lit.normals), p, normals);
     return normals.colour();
 }
@@ -111,33 +113,34 @@ struct Timed {
     NormalMap source;
 };
 
-// One frame of the globe at the program's size, by this lesson's pipeline
-// (split frames, trilinear maps, linear light) or tinyrenderer's way.
-struct SpeedScene {
-    const Globe* globe;
-    rl::Image diffuse, normal_map;
+// One frame of the globe at the program's size: by this lesson's render
+// (the program's path) with some options, or by the port of tinyrenderer.
+struct LessonFrame {
+    const std::vector<MappedModel>* models;
+    perspective::Camera camera;
+    RenderOptions options;
+    int size;
 };
 
-void frame_ours(benchmark::State& state, const SpeedScene* s) {
-    const Globe& g = *s->globe;
+void frame_lesson(benchmark::State& state, const LessonFrame* f) {
     for (auto _ : state) {
-        perspective::ColourTarget frame = perspective::colour_target(g.size, g.size);
-        const NormalMappedShader shader{
-            g.uniforms, g.model.maps,     NormalMap::tangent, shading::Specular::phong,
-            1.0f,       &g.model.tangents};
-        shading::draw(shading::Surface{g.model.lit.model.mesh, g.model.lit.normals}, shader, frame,
-                      {});
-        benchmark::DoNotOptimize(frame.colour().get(0, 0));
+        perspective::ColourTarget frame = perspective::colour_target(f->size, f->size);
+        benchmark::DoNotOptimize(render(*f->models, f->camera, f->options, frame).fragments);
     }
 }
 
-void frame_tinyrenderer(benchmark::State& state, const SpeedScene* s) {
-    const Globe& g = *s->globe;
-    const tinyrenderer_style::Textures t{&s->diffuse, &s->normal_map};
+struct PortFrame {
+    const rl::Mesh* mesh;
+    tinyrenderer_port::Textures textures;
+    perspective::Camera camera;
+    int size;
+};
+
+void frame_port(benchmark::State& state, const PortFrame* f) {
     for (auto _ : state)
-        benchmark::DoNotOptimize(tinyrenderer_style::render(g.model.lit.model.mesh, t, g.camera,
-                                                            {0.3f, 0.5f, 1.0f}, g.size, g.size)
-                                     .get(0, 0));
+        benchmark::DoNotOptimize(tinyrenderer_port::render(*f->mesh, f->textures, f->camera,
+                                                           {0.3f, 0.5f, 1.0f}, f->size, f->size)
+                                     .fragments);
 }
 
 // The tangent frames of the globe's corners (the one-off cost, on loading).
@@ -202,20 +205,36 @@ int main(int argc, char** argv) {
             benchmark::RegisterBenchmark(("globe/" + methods[i].name).c_str(), render_globe,
                                          &timed[i])
                 ->Unit(benchmark::kMicrosecond);
-        // Speed against a tinyrenderer-style renderer, at the program's 800 x 800.
+        // Speed against the port of tinyrenderer, at the program's 800 x 800: this
+        // lesson as the program draws it, and set to tinyrenderer's work (nearest
+        // texels, one light, bytes lit as they are, Phong's highlight, no
+        // specular map).
         Globe big = g;
         big.size = options.quick ? 128 : 800;
-        SpeedScene speed{&big, {}, {}};
-        {
-            const rl::Mesh& globe_mesh = g.model.lit.model.mesh;
-            speed.diffuse =
-                rl::load_texture(globe_mesh, 0, rl::TextureRole::diffuse, warnings).image;
-            speed.normal_map =
-                rl::load_texture(globe_mesh, 0, rl::TextureRole::normal_tangent, warnings).image;
-        }
-        benchmark::RegisterBenchmark("frame/this lesson", frame_ours, &speed)
+        std::vector<MappedModel> lesson_globe, same_work_globe;
+        lesson_globe.push_back(g.model);
+        same_work_globe.push_back(load_mapped_model(rl::project_model("globe"),
+                                                    rl::mat4::identity(), TangentMethod::split,
+                                                    warnings, shading::Output::naive));
+        same_work_globe[0].maps.specular.reset();
+        RenderOptions same_work;
+        same_work.filter = textures::Filter::nearest;
+        same_work.output = shading::Output::naive;
+        same_work.specular = shading::Specular::phong;
+        same_work.lighting.lights.resize(1);
+        const LessonFrame lesson_frame{&lesson_globe, big.camera, {}, big.size},
+            same_work_frame{&same_work_globe, big.camera, same_work, big.size};
+        const rl::Image port_diffuse =
+            rl::load_texture(mesh, 0, rl::TextureRole::diffuse, warnings).image;
+        const rl::Image port_normals =
+            rl::load_texture(mesh, 0, rl::TextureRole::normal_tangent, warnings).image;
+        const PortFrame port_frame{&mesh, {&port_diffuse, &port_normals}, big.camera, big.size};
+        benchmark::RegisterBenchmark("frame/this lesson", frame_lesson, &lesson_frame)
             ->Unit(benchmark::kMillisecond);
-        benchmark::RegisterBenchmark("frame/tinyrenderer-style", frame_tinyrenderer, &speed)
+        benchmark::RegisterBenchmark("frame/this lesson, tinyrenderer's work", frame_lesson,
+                                     &same_work_frame)
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark("frame/tinyrenderer port", frame_port, &port_frame)
             ->Unit(benchmark::kMillisecond);
         for (TangentMethod m : kTangentMethods)
             benchmark::RegisterBenchmark((std::string("tangents/") + name(m)).c_str(),
@@ -306,24 +325,42 @@ int main(int argc, char** argv) {
                                  e.mean, e.p99, e.max});
         }
         crate_table.write_csv(options.out_dir / "07_mirrored.csv");
-        // Both renderers' normals against the exact ones, at 800 x 800.
-        rl::ResultsTable speed_table(
-            {"renderer", "ms_per_frame", "mean_error_degrees", "p99_error_degrees"});
+        // The three frames: time, time per fragment (with the spread of the
+        // repetitions), and the normals against the exact ones.
+        rl::ResultsTable speed_table({"renderer", "ms_per_frame", "ms_min", "ms_max",
+                                      "ns_per_fragment", "fragments", "mean_error_degrees",
+                                      "p99_error_degrees"});
         {
             const rl::Grid<rl::vec3> big_truth = exact_normals(big);
             const AngleError ours = compare(
                 big_truth, probe(big, big.model.maps, big.model.tangents, NormalMap::tangent));
+            const AngleError ours_nearest =
+                compare(big_truth, probe(big, big.model.maps, big.model.tangents,
+                                         NormalMap::tangent, textures::Filter::nearest));
             rl::Grid<rl::vec3> theirs(big.size, big.size, rl::vec3{NAN, NAN, NAN});
-            tinyrenderer_style::render(big.model.lit.model.mesh,
-                                       {&speed.diffuse, &speed.normal_map}, big.camera,
-                                       {0.3f, 0.5f, 1.0f}, big.size, big.size, &theirs);
+            const std::size_t port_fragments =
+                tinyrenderer_port::render(mesh, port_frame.textures, big.camera, {0.3f, 0.5f, 1.0f},
+                                          big.size, big.size, &theirs)
+                    .fragments;
             const AngleError tr = compare(big_truth, theirs);
-            speed_table.add_row({std::string("this lesson (split frames, trilinear, linear light)"),
-                                 timings.at("frame/this lesson").median_ns / 1e6, ours.mean,
-                                 ours.p99});
-            speed_table.add_row({std::string("tinyrenderer-style (per-pixel frame, nearest texel)"),
-                                 timings.at("frame/tinyrenderer-style").median_ns / 1e6, tr.mean,
-                                 tr.p99});
+            const auto fragments_of = [](const LessonFrame& f) {
+                perspective::ColourTarget frame = perspective::colour_target(f.size, f.size);
+                return render(*f.models, f.camera, f.options, frame).fragments;
+            };
+            const auto row = [&](const std::string& name, const char* timer, std::size_t fragments,
+                                 const AngleError& e) {
+                const rl::lab::Timing& t = timings.at(timer);
+                speed_table.add_row({name, t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6,
+                                     t.median_ns / static_cast<double>(fragments),
+                                     static_cast<double>(fragments), e.mean, e.p99});
+            };
+            row("this lesson (split frames, trilinear, linear light, two lights)",
+                "frame/this lesson", fragments_of(lesson_frame), ours);
+            row("this lesson doing tinyrenderer's work (nearest, bytes, one light)",
+                "frame/this lesson, tinyrenderer's work", fragments_of(same_work_frame),
+                ours_nearest);
+            row("tinyrenderer port (double, per-pixel 3x3 inverse and frame, nearest)",
+                "frame/tinyrenderer port", port_fragments, tr);
         }
         speed_table.write_csv(options.out_dir / "07_speed.csv");
         table.write_csv(options.out_dir / "07_normals.csv");
