@@ -10,8 +10,12 @@ rl::vec4 to_vec4(rl::Rgba c) {
 }
 
 rl::Rgba to_rgba(rl::vec4 c) {
+    // Rounded to nearest, halves up: what std::lround gives for these
+    // non-negative values (exactly, in double), without its library call.
     auto byte = [](float x) {
-        return static_cast<std::uint8_t>(std::lround(std::clamp(x, 0.0f, 1.0f) * 255.0f));
+        const float v = std::clamp(x, 0.0f, 1.0f) * 255.0f;
+        if (!(v >= 0)) return std::uint8_t{0};  // NaN
+        return static_cast<std::uint8_t>(static_cast<int>(static_cast<double>(v) + 0.5));
     };
     return {byte(c.x), byte(c.y), byte(c.z), byte(c.w)};
 }
@@ -86,8 +90,14 @@ int wrap_texel(int i, int size, Wrap wrap) {
 
 namespace {
 
+// wrap_texel with its common case, an index inside, inlined (it runs for
+// every texel of every lookup).
+inline int wrapped(int i, int size, Wrap wrap) {
+    return i >= 0 && i < size ? i : wrap_texel(i, size, wrap);
+}
+
 // The texel at wrapped indices (x, y); -1 in either: the border colour.
-rl::vec4 fetch(const rl::Image& level, int x, int y, const SamplerState& state) {
+[[gnu::always_inline]] inline rl::vec4 fetch(const rl::Image& level, int x, int y, const SamplerState& state) {
     if (x < 0 || y < 0) return state.border;
     const rl::Rgba c = level.get(x, y);
     if (!state.encoding) return to_vec4(c);
@@ -96,8 +106,8 @@ rl::vec4 fetch(const rl::Image& level, int x, int y, const SamplerState& state) 
 }
 
 rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) {
-    return fetch(level, wrap_texel(i, level.width(), state.wrap),
-                 wrap_texel(j, level.height(), state.wrap), state);
+    return fetch(level, wrapped(i, level.width(), state.wrap),
+                 wrapped(j, level.height(), state.wrap), state);
 }
 
 // Texel coordinates are computed in double after reducing u to one period:
@@ -123,17 +133,17 @@ rl::vec4 sample_level(const rl::Image& level, rl::vec2 uv, bool bilinear,
                       const SamplerState& state) {
     const double s = to_texels(uv.x, level.width(), state.wrap),
                  t = to_texels(uv.y, level.height(), state.wrap);
-    if (!bilinear)
-        return texel(level, static_cast<int>(std::floor(s)), static_cast<int>(std::floor(t)),
-                     state);
+    if (!bilinear)  // (s, t >= 0 unless clamped or bordered: then truncating is flooring)
+        return texel(level, static_cast<int>(s >= 0 ? s : std::floor(s)),
+                     static_cast<int>(t >= 0 ? t : std::floor(t)), state);
     // The four texel centres around (s, t): centres sit at half-integers.
     const double x = s - 0.5, y = t - 0.5;
     const int i = static_cast<int>(std::floor(x)), j = static_cast<int>(std::floor(y));
     const float fx = static_cast<float>(x - i), fy = static_cast<float>(y - j);
-    const int x0 = wrap_texel(i, level.width(), state.wrap),
-              x1 = wrap_texel(i + 1, level.width(), state.wrap);
-    const int y0 = wrap_texel(j, level.height(), state.wrap),
-              y1 = wrap_texel(j + 1, level.height(), state.wrap);
+    const int x0 = wrapped(i, level.width(), state.wrap),
+              x1 = wrapped(i + 1, level.width(), state.wrap);
+    const int y0 = wrapped(j, level.height(), state.wrap),
+              y1 = wrapped(j + 1, level.height(), state.wrap);
     const rl::vec4 bottom =
         fetch(level, x0, y0, state) * (1 - fx) + fetch(level, x1, y0, state) * fx;
     const rl::vec4 top = fetch(level, x0, y1, state) * (1 - fx) + fetch(level, x1, y1, state) * fx;

@@ -69,7 +69,10 @@ Reflection<T> reflection(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3
             s = rl::dot(n, rl::normalize(light.direction + to_eye));  // n . h
         }
         // pow(0, 0) is 1: an exponent of 0 makes the highlight cover the lit side.
-        const T highlight = std::pow(std::max(s, T(0)), lighting.shininess);
+        // (A base of 0 with any other exponent is 0: no pow needed.)
+        const T base = std::max(s, T(0));
+        const T highlight =
+            base > 0 || lighting.shininess == 0 ? std::pow(base, lighting.shininess) : T(0);
         out.diffuse += light.colour * n_dot_l;
         out.specular += light.colour * lighting.specular * highlight;
     }
