@@ -63,10 +63,23 @@ rl::Image downsample(const rl::Image& image, const TexelEncoding* encoding) {
 }
 // [/doc:downsample]
 
-MipChain::MipChain(const rl::Image& image, const TexelEncoding* encoding) {
-    levels_.push_back(image);
-    while (levels_.back().width() > 1 || levels_.back().height() > 1)
-        levels_.push_back(downsample(levels_.back(), encoding));
+MipChain::MipChain(const rl::Image& image, const TexelEncoding* encoding)
+    : base_(std::make_shared<const rl::Image>(image)),
+      encoding_(encoding),
+      smaller_(std::make_shared<Smaller>()) {}
+
+const std::vector<rl::Image>& MipChain::smaller() const {
+    std::call_once(smaller_->built, [this] {
+        std::vector<rl::Image>& levels = smaller_->levels;
+        const auto last = [&]() -> const rl::Image& {
+            return levels.empty() ? *base_ : levels.back();
+        };
+        while (last().width() > 1 || last().height() > 1) {
+            rl::Image next = downsample(last(), encoding_);  // before push_back moves the levels
+            levels.push_back(std::move(next));
+        }
+    });
+    return smaller_->levels;
 }
 
 // [doc:wrap]
@@ -97,7 +110,8 @@ inline int wrapped(int i, int size, Wrap wrap) {
 }
 
 // The texel at wrapped indices (x, y); -1 in either: the border colour.
-[[gnu::always_inline]] inline rl::vec4 fetch(const rl::Image& level, int x, int y, const SamplerState& state) {
+[[gnu::always_inline]] inline rl::vec4 fetch(const rl::Image& level, int x, int y,
+                                             const SamplerState& state) {
     if (x < 0 || y < 0) return state.border;
     const rl::Rgba c = level.get(x, y);
     if (!state.encoding) return to_vec4(c);

@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "rasterlab/image.hpp"
@@ -54,13 +56,25 @@ struct TexelEncoding {
 class MipChain {
   public:
     // Each level averages the one before in the values of `encoding`
-    // (nullptr: the bytes themselves).
+    // (nullptr: the bytes themselves). The smaller levels are built the
+    // first time anything asks for them (once, safely from several threads),
+    // so a texture only ever sampled by `nearest` or `bilinear` costs no
+    // averaging; copies share them.
     explicit MipChain(const rl::Image& image, const TexelEncoding* encoding = nullptr);
-    int levels() const { return static_cast<int>(levels_.size()); }
-    const rl::Image& level(int i) const { return levels_[static_cast<std::size_t>(i)]; }
+    int levels() const { return 1 + static_cast<int>(smaller().size()); }
+    const rl::Image& level(int i) const {
+        return i == 0 ? *base_ : smaller()[static_cast<std::size_t>(i - 1)];
+    }
 
   private:
-    std::vector<rl::Image> levels_;
+    struct Smaller {
+        std::once_flag built;
+        std::vector<rl::Image> levels;
+    };
+    const std::vector<rl::Image>& smaller() const;
+    std::shared_ptr<const rl::Image> base_;
+    const TexelEncoding* encoding_;
+    std::shared_ptr<Smaller> smaller_;
 };
 
 // One level down: each output texel averages the input texels under it,

@@ -45,10 +45,12 @@ int main(int argc, char** argv) {
         std::vector<std::string> warnings;
         std::vector<normal_mapping::MappedModel> models;
         if (view.models.empty())
-            models = normal_mapping::default_scene(tangents, warnings, options.output);
+            models = normal_mapping::default_scene(tangents, warnings, options.output,
+                                                   options.normal_map);
         for (const std::string& path : view.models)  // as stored: the identity model matrix
             models.push_back(normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents,
-                                                               warnings, options.output));
+                                                               warnings, options.output,
+                                                               options.normal_map));
         rl::print_warnings("07_normal_mapping", warnings);
         perspective::Box box;
         for (const normal_mapping::MappedModel& m : models)

@@ -16,7 +16,8 @@ std::optional<textures::MipChain> load_map(const rl::Mesh& mesh, rl::TextureRole
 
 }  // namespace
 
-Maps load_maps(const rl::Mesh& mesh, std::vector<std::string>& warnings) {
+Maps load_maps(const rl::Mesh& mesh, std::vector<std::string>& warnings,
+               std::optional<NormalMap> only) {
     Maps maps;
     if (mesh.uvs.empty()) {
         if (rl::find_texture(mesh, 0, rl::TextureRole::normal_tangent) ||
@@ -26,8 +27,10 @@ Maps load_maps(const rl::Mesh& mesh, std::vector<std::string>& warnings) {
                                "ignored");
         return maps;
     }
-    maps.tangent_normals = load_map(mesh, rl::TextureRole::normal_tangent, warnings);
-    maps.object_normals = load_map(mesh, rl::TextureRole::normal_object, warnings);
+    if (!only || *only == NormalMap::tangent)
+        maps.tangent_normals = load_map(mesh, rl::TextureRole::normal_tangent, warnings);
+    if (!only || *only == NormalMap::object)
+        maps.object_normals = load_map(mesh, rl::TextureRole::normal_object, warnings);
     maps.specular = load_map(mesh, rl::TextureRole::specular, warnings);
     return maps;
 }

@@ -32,7 +32,9 @@ struct Maps {
 
 // Finds `<name>_nm_tangent`, `_nm`, `_spec` (or the MTL's maps) beside the
 // OBJ. A missing map is silent (most models have few); an unreadable one warns.
-Maps load_maps(const rl::Mesh& mesh, std::vector<std::string>& warnings);
+// `only`: load just that normal map (none for NormalMap::none), not both.
+Maps load_maps(const rl::Mesh& mesh, std::vector<std::string>& warnings,
+               std::optional<NormalMap> only = std::nullopt);
 
 // A tangent-space texel (r, g, b) as a direction: 2 * rgb - 1, the OpenGL
 // convention (green along +v).

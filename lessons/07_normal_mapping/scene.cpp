@@ -6,22 +6,22 @@ namespace normal_mapping {
 
 MappedModel load_mapped_model(const std::filesystem::path& path, const rl::mat4& transform,
                               TangentMethod method, std::vector<std::string>& warnings,
-                              shading::Output output) {
+                              shading::Output output, std::optional<NormalMap> only) {
     MappedModel m{
         shading::load_lit_model(path, transform, output, shading::Weighting::angle, warnings),
         {},
         {}};
     m.tangents = corner_tangents(m.lit.model.mesh, m.lit.normals, method);
-    m.maps = load_maps(m.lit.model.mesh, warnings);
+    m.maps = load_maps(m.lit.model.mesh, warnings, only);
     return m;
 }
 
 std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings,
-                                       shading::Output output) {
+                                       shading::Output output, std::optional<NormalMap> only) {
     std::vector<MappedModel> models;
     const auto add = [&](const char* name, const rl::Trs& trs) {
-        models.push_back(
-            load_mapped_model(rl::project_model(name), rl::compose(trs), method, warnings, output));
+        models.push_back(load_mapped_model(rl::project_model(name), rl::compose(trs), method,
+                                           warnings, output, only));
     };
     add("floor", {.scale = {1.7f, 1.7f, 1.7f}});
     add("globe", {.translation = {-0.75f, 0.9f, -0.2f}, .rotation = rl::axis_angle({0, 1, 0}, 20)});

@@ -17,15 +17,17 @@ struct MappedModel {
 };
 
 // The diffuse texture is decoded as sRGB unless the output is naive (as in
-// lesson 06).
+// lesson 06); `only` loads just the normal map a render will use.
 MappedModel load_mapped_model(const std::filesystem::path& path, const rl::mat4& transform,
                               TangentMethod method, std::vector<std::string>& warnings,
-                              shading::Output output = shading::Output::srgb);
+                              shading::Output output = shading::Output::srgb,
+                              std::optional<NormalMap> only = std::nullopt);
 
 // The default: the globe (diffuse, tangent- and object-space normal maps,
 // specular map) and the crate (mirrored UVs on two faces) on the floor.
 std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings,
-                                       shading::Output output = shading::Output::srgb);
+                                       shading::Output output = shading::Output::srgb,
+                                       std::optional<NormalMap> only = std::nullopt);
 
 struct RenderOptions {
     perspective::PipelineOptions pipeline;

@@ -129,6 +129,21 @@ void frame_lesson(benchmark::State& state, const LessonFrame* f) {
     }
 }
 
+// The same frame's geometry alone: a depth-only pass (no colour attachment,
+// so no fragment stage runs), to split this lesson's time into the work
+// before the fragment stage and the fragment stage itself.
+void frame_depth_only(benchmark::State& state, const LessonFrame* f) {
+    const MappedModel& m = f->models->front();
+    const shading::UnlitShader unlit{
+        perspective::view_projection(f->camera, 1.0f) * m.lit.model.transform, {}};
+    for (auto _ : state) {
+        perspective::RenderTarget<> depth(f->size, f->size);
+        benchmark::DoNotOptimize(
+            perspective::draw(shading::Surface(m.lit.model.mesh, m.lit.normals), unlit, depth)
+                .fragments);
+    }
+}
+
 struct PortFrame {
     const rl::Mesh* mesh;
     tinyrenderer_port::Textures textures;
@@ -235,6 +250,9 @@ int main(int argc, char** argv) {
                                      &same_work_frame)
             ->Unit(benchmark::kMillisecond);
         benchmark::RegisterBenchmark("frame/tinyrenderer port", frame_port, &port_frame)
+            ->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark("frame/this lesson, depth only", frame_depth_only,
+                                     &same_work_frame)
             ->Unit(benchmark::kMillisecond);
         for (TangentMethod m : kTangentMethods)
             benchmark::RegisterBenchmark((std::string("tangents/") + name(m)).c_str(),
@@ -361,6 +379,10 @@ int main(int argc, char** argv) {
                 ours_nearest);
             row("tinyrenderer port (double, per-pixel 3x3 inverse and frame, nearest)",
                 "frame/tinyrenderer port", port_fragments, tr);
+            // (no normals: the depth-only pass shades nothing)
+            row("this lesson, depth only (everything before the fragment stage)",
+                "frame/this lesson, depth only", fragments_of(same_work_frame),
+                AngleError{NAN, NAN, NAN});
         }
         speed_table.write_csv(options.out_dir / "07_speed.csv");
         table.write_csv(options.out_dir / "07_normals.csv");
