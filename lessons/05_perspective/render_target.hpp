@@ -9,7 +9,7 @@
 //   perspective::TargetOptions four;  four.samples = 4;
 //   perspective::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600, four);
 //   perspective::draw(geometry, program, frame, {});   // fragment() returns {rgba, normal}
-//   const rl::Image picture = perspective::resolve(frame.colour()<0>());
+//   const rl::Image picture = perspective::resolve(frame.colour<0>(), frame.samples());
 //   perspective::RenderTarget<> shadow_map(1024, 1024);  // depth only
 #pragma once
 
@@ -126,6 +126,7 @@ inline ColourTarget colour_target(int width, int height, rl::Rgba background = r
 // the right and top edges), row by row from the bottom left; a draw limited
 // to each tile in turn (PipelineOptions::tile) gives the whole frame.
 inline std::vector<triangles::PixelRect> tiles(int width, int height, int size) {
+    if (size < 1) throw std::invalid_argument("a tile must be at least 1 pixel wide");
     std::vector<triangles::PixelRect> out;
     for (int y = 0; y < height; y += size)
         for (int x = 0; x < width; x += size)
