@@ -40,6 +40,7 @@ status=0
 run_target build-fuzz/tests/fuzz/fuzz_tga tests/fuzz/corpus/tga 65536 || status=1
 run_target build-fuzz/tests/fuzz/fuzz_obj tests/fuzz/corpus/obj 16384 || status=1
 run_target build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture 65536 || status=1
+run_target build-fuzz/tests/fuzz/fuzz_clipper tests/fuzz/corpus/clipper 48 || status=1
 for cli in build-fuzz/tests/fuzz/fuzz_cli_*; do
     # The lessons print a line per run and an error per refused option: keep
     # stdout closed (-close_fd_mask=1); libFuzzer's own report goes to stderr.

@@ -55,10 +55,14 @@ struct ClipPlanes {
 };
 ClipPlanes clip_planes(ClipMode mode, int width, int height);
 
-// A convex polygon: a triangle cut by k planes has at most 3 + k vertices.
+// A convex polygon: a triangle cut by k planes has at most 3 + k vertices,
+// 9 for the six planes. (A polygon that float rounding has made a little
+// non-convex, near the eye, could cross a plane more often than that:
+// clip_against refuses it rather than writing past the end.)
 template <Interpolable V>
 struct ClipPolygon {
-    std::array<ClipVertex<V>, 9> vertices;
+    static constexpr int kCapacity = 9;
+    std::array<ClipVertex<V>, kCapacity> vertices;
     int size = 0;
 };
 
@@ -70,16 +74,21 @@ struct ClipPolygon {
 template <Interpolable V>
 ClipPolygon<V> clip_against(const ClipPolygon<V>& in, ClipPlane plane) {
     ClipPolygon<V> out;
+    const auto add = [&out](const ClipVertex<V>& v) {
+        if (out.size == ClipPolygon<V>::kCapacity) return false;  // not convex: see above
+        out.vertices[static_cast<std::size_t>(out.size++)] = v;
+        return true;
+    };
     for (int i = 0; i < in.size; ++i) {
         const ClipVertex<V>& a = in.vertices[static_cast<std::size_t>(i)];
         const ClipVertex<V>& b = in.vertices[static_cast<std::size_t>((i + 1) % in.size)];
         const float da = rl::dot(plane, a.position), db = rl::dot(plane, b.position);
-        if (da >= 0) out.vertices[static_cast<std::size_t>(out.size++)] = a;
+        if (da >= 0 && !add(a)) return {};
         if ((da >= 0) != (db >= 0)) {  // the edge crosses the plane
             const float t = da / (da - db);
-            out.vertices[static_cast<std::size_t>(out.size++)] = {
-                a.position + (b.position - a.position) * t,
-                blend(a.varyings, 1 - t, b.varyings, t)};
+            if (!add({a.position + (b.position - a.position) * t,
+                      blend(a.varyings, 1 - t, b.varyings, t)}))
+                return {};
         }
     }
     return out;

@@ -35,6 +35,20 @@ double wrong_share(const std::vector<WorldTriangle>& scene, const Camera& camera
     return d.covered ? static_cast<double>(d.wrong) / static_cast<double>(d.covered) : 0.0;
 }
 
+// A polygon that crosses a plane at every edge (as rounding can make one
+// near the eye, a vertex within 1e-30 of the origin) would need more than
+// the polygon's 9 slots: the pass refuses it instead of writing past them
+// (issue 17: an ASan SEGV in a direct call before).
+TEST(PerspectiveTest, ClippingAPolygonThatCrossesAPlaneAtEveryEdgeStaysInItsSlots) {
+    ClipPolygon<rl::vec2> zigzag;
+    for (int i = 0; i < 9; ++i)  // alternately in front of and behind x = 0
+        zigzag.vertices[static_cast<std::size_t>(zigzag.size++)] = {
+            {i % 2 ? -1.0f : 1.0f, static_cast<float>(i), 0, 1}, {}};
+    const ClipPolygon<rl::vec2> out = clip_against(zigzag, ClipPlane{1, 0, 0, 0});
+    EXPECT_LE(out.size, ClipPolygon<rl::vec2>::kCapacity);
+    EXPECT_EQ(out.size, 0);  // refused: 5 kept vertices and 9 crossings do not fit
+}
+
 TEST(PerspectiveTest, ClippedTriangleStaysInsideEveryPlane) {
     const ClipPlanes planes = clip_planes(ClipMode::all, 100, 100);
     const std::array<ClipVertex<rl::vec2>, 3> triangle = {

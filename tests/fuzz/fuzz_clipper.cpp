@@ -1,0 +1,30 @@
+// libFuzzer target: lesson 05's clipper on clip-space triangles of any
+// floats (the input's bytes, 12 floats a triangle), against the planes of
+// every clip mode. The polygon must stay within its slots and, when kept,
+// have finite vertices; anything else (an ASan report included) is a finding.
+// Run: build-fuzz/tests/fuzz/fuzz_clipper
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+
+#include "05_perspective/clipping.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    if (size < 12 * sizeof(float)) return 0;
+    float f[12];
+    std::memcpy(f, data, sizeof f);
+    std::array<perspective::ClipVertex<rl::vec2>, 3> triangle;
+    for (std::size_t k = 0; k < 3; ++k)
+        triangle[k] = {{f[4 * k], f[4 * k + 1], f[4 * k + 2], f[4 * k + 3]},
+                       {static_cast<float>(k), 1.0f}};
+    for (perspective::ClipMode mode : perspective::kClipModes) {
+        const perspective::ClipPolygon<rl::vec2> polygon =
+            perspective::clip_triangle(triangle, perspective::clip_planes(mode, 800, 600));
+        if (polygon.size < 0 || polygon.size > perspective::ClipPolygon<rl::vec2>::kCapacity)
+            std::abort();
+        for (int i = 0; i < polygon.size; ++i)
+            if (!perspective::finite(polygon.vertices[static_cast<std::size_t>(i)].position))
+                std::abort();
+    }
+    return 0;
+}
