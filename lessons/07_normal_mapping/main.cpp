@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
 
+        if (options.filter == textures::Filter::trilinear) normal_mapping::build_mip_levels(models);
         // [doc:lesson07-main]
         perspective::ColourTarget frame = perspective::colour_target(width, height);
         const auto start = std::chrono::steady_clock::now();

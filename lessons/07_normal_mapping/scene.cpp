@@ -29,6 +29,14 @@ std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::st
     return models;
 }
 
+void build_mip_levels(const std::vector<MappedModel>& models) {
+    for (const MappedModel& m : models) {
+        m.lit.model.texture.levels();
+        for (const auto* map : {&m.maps.tangent_normals, &m.maps.object_normals, &m.maps.specular})
+            if (*map) (*map)->levels();
+    }
+}
+
 // [doc:render-mapped]
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                    const perspective::Camera& camera, const RenderOptions& options,

@@ -39,6 +39,11 @@ struct RenderOptions {
     shading::Output output = shading::Output::srgb;         // naive: the bytes lit as if linear
 };
 
+// Builds every texture's smaller mip levels now (they are built on first
+// use otherwise), so that a timed render of trilinear lookups times
+// rendering alone.
+void build_mip_levels(const std::vector<MappedModel>& models);
+
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                    const perspective::Camera& camera, const RenderOptions& options,
                                    perspective::ColourTarget& frame);
