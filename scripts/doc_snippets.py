@@ -36,6 +36,11 @@ region, table, row or column that does not exist, or when a marked source
 region is shown by no page. With --tests-from BUILD_DIR it also checks that
 every test a page names where it says *Test:* (the pitfalls), and every test
 in docs/robustness.md's case tables, exists in that build's CTest list.
+A value marker must not start a line (even indented): a line that begins
+`<!-- ` opens an HTML block, which ends the paragraph before it, so the code
+host shows the sentence split in two. --check refuses such a line; --fill
+joins it to the line before.
+
 --fill rewrites the pages' copies and values from the sources.
 """
 import argparse
@@ -188,6 +193,20 @@ def named_tests(page: pathlib.Path, text: str) -> list:
     return found
 
 
+LEADING_VALUE = re.compile(r"^\s*<!-- value:")
+
+
+def join_leading_values(text: str) -> str:
+    """Each line that starts with a value marker, joined to the line before."""
+    out = []
+    for line in text.split("\n"):
+        if LEADING_VALUE.match(line) and out and out[-1].strip():
+            out[-1] = out[-1].rstrip() + " " + line.lstrip()
+        else:
+            out.append(line)
+    return "\n".join(out)
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     mode = parser.add_mutually_exclusive_group()
@@ -205,6 +224,15 @@ def main() -> int:
     tests = ctest_names(options.tests_from) if options.tests_from else None
     for page in sorted((ROOT / "docs").glob("*.md")):
         text = page.read_text()
+        leading = [i + 1 for i, line in enumerate(text.split("\n")) if LEADING_VALUE.match(line)]
+        if leading and options.fill:
+            text = join_leading_values(text)
+            page.write_text(text)
+            print(f"joined line-leading value markers in {page.relative_to(ROOT)}")
+        elif leading:
+            problems.append(f"{page.relative_to(ROOT)}: line {', '.join(map(str, leading))} starts "
+                            "with a value marker, which opens an HTML block and splits its "
+                            "paragraph (join it to the line before)")
         used.update((m.group("file"), m.group("region")) for m in SNIPPET.finditer(text))
         if tests is not None:
             for where, names in named_tests(page, text):

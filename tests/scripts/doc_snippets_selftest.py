@@ -45,4 +45,12 @@ with tempfile.TemporaryDirectory() as tmp:
     assert run(root, "--fill") == 0 and "-->12<!--" in page.read_text(), page.read_text()
     page.write_text(shown + stale.replace("method=a", "method=c"))
     assert run(root) == 1, "a value from no row passed the check"
+
+    # A value marker starting a line splits its paragraph: refused, and --fill
+    # joins it to the line before.
+    page.write_text(shown + "takes\n<!-- value: docs/charts/t.md | method=a | scene=big (1 px) | ns -->12.5<!-- /value --> ns\n")
+    assert run(root) == 1, "a line-leading value marker passed the check"
+    assert run(root, "--fill") == 0
+    assert "takes <!-- value:" in page.read_text(), page.read_text()
+    assert run(root) == 0, "a joined value marker failed the check"
 print("doc_snippets self-test: ok")
