@@ -37,8 +37,9 @@ def pareto_front(points):
         return (yj <= yi and clearly_faster) or (yj < yi and not_slower)
 
     front = []
-    for i in range(len(points)):
-        dominated = any(beats(j, i) for j in range(len(points)) if j != i)
+    measured = [i for i, (x, y) in enumerate(points) if not (math.isnan(x) or math.isnan(y))]
+    for i in measured:  # a point without an error or a time is nobody's trade-off
+        dominated = any(beats(j, i) for j in measured if j != i)
         if not dominated:
             front.append(i)
     return sorted(front, key=lambda i: points[i][0])

@@ -3,8 +3,8 @@
 // (x, y in pixels; z a depth, for lesson 03); a face that turns clockwise on
 // screen shows its back and is culled; the rest go to the rasterizer, which
 // hands every covered pixel, with its barycentric weights, to the fragment
-// stage. Lesson 03 puts its depth test in the fragment stage and lesson 04
-// its texture lookup; lesson 05 replaces the loop by the full pipeline
+// stage. Lesson 04 puts lesson 03's depth test and its own texture lookup in
+// the fragment stage; lesson 05 replaces the loop by the full pipeline
 // (clip space, clipping, perspective). Derivation: docs/02_triangles.md.
 //
 //   triangles::draw_faces(mesh, 800, 800, {},

@@ -78,7 +78,7 @@ inline bool depth_passes(DepthCompare compare, float z, float stored) {
 // units plus `slope` times the triangle's steepest depth change per pixel,
 // max(|dz/dx|, |dz/dy|), as OpenGL's polygon offset (glPolygonOffset's
 // factor and units, with units in depth itself rather than in steps of a
-// fixed-point format). Lesson 08 uses the bias against shadow acne.
+// fixed-point format). Shadow maps use the bias against shadow acne.
 struct DepthState {
     DepthCompare compare = DepthCompare::less;
     bool write = true;

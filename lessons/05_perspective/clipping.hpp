@@ -5,8 +5,9 @@
 // position at all; in clip space every plane is linear, so a straight line
 // cut is exact. Derivation and pictures: docs/05_perspective.md#clipping.
 //
-//   perspective::ClipPolygon<rl::vec2> polygon = perspective::clip_triangle(
-//       {{{p0, uv0}, {p1, uv1}, {p2, uv2}}}, perspective::ClipMode::guard_band, 800, 600);
+//   const perspective::ClipPolygon<rl::vec2> polygon = perspective::clip_triangle(
+//       {{{p0, uv0}, {p1, uv1}, {p2, uv2}}},
+//       perspective::clip_planes(perspective::ClipMode::guard_band, 800, 600));
 //   for (int i = 1; i + 1 < polygon.size; ++i)  // a fan: (0, i, i + 1)
 //       draw(polygon.vertices[0], polygon.vertices[i], polygon.vertices[i + 1]);
 #pragma once

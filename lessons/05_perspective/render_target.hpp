@@ -4,7 +4,7 @@
 // depth attachment with its state (lesson 03's compare, write, clear, bias).
 // A target may hold several samples per pixel; resolve() averages them into
 // one image per attachment. A target with no colour attachment is a
-// depth-only pass (lesson 08 renders shadow maps so).
+// depth-only pass (how a shadow map is rendered).
 //
 //   perspective::TargetOptions four;  four.samples = 4;
 //   perspective::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600, four);
@@ -150,7 +150,8 @@ Pixel average(const Pixel* samples, int count) {
         };
         return {mean(sum[0]), mean(sum[1]), mean(sum[2]), mean(sum[3])};
     } else {
-        static_assert(Interpolable<Pixel>, "resolve averages bytes or types made of floats");
+        static_assert(Interpolable<Pixel> && !std::is_integral_v<Pixel>,
+                      "resolve averages bytes or types made of floats (ids cannot be averaged)");
         std::array<double, sizeof(Pixel) / sizeof(float)> sum{};
         for (int s = 0; s < count; ++s) {
             const Lanes<Pixel> lanes = std::bit_cast<Lanes<Pixel>>(samples[s]);
