@@ -60,12 +60,23 @@ bool rasterize(RasterMethod method, const ScreenTriangle& t, const PixelRect& re
 }
 
 // The weights `method` gives pixel (x, y) of the triangle (wherever the
-// pixel lies, inside or not): exactly those it hands to `fragment_stage`.
-inline rl::vec3 weights_at(RasterMethod method, const ScreenTriangle& t, int x, int y) {
-    if (method == RasterMethod::edge) return edge_weights_at(t, x, y);
-    return barycentric(t, {x + 0.5f, y + 0.5f}, signed_area2(t));
-}
+// pixel lies, inside or not): exactly those it hands to its fragment stage.
+// Set up once per triangle; at() per pixel.
+class PixelWeights {
+  public:
+    PixelWeights(RasterMethod method, const ScreenTriangle& t)
+        : method_(method), t_(t), area_(signed_area2(t)), edge_(t) {}
+    rl::vec3 at(int x, int y) const {
+        if (method_ == RasterMethod::edge) return edge_.at(x, y);
+        return barycentric(t_, {x + 0.5f, y + 0.5f}, area_);
+    }
 
+  private:
+    RasterMethod method_;
+    ScreenTriangle t_;
+    float area_;
+    EdgeWeights edge_;
+};
 // The whole image: {0, 0, width, height}.
 template <class FragmentStage>
 bool rasterize(RasterMethod method, const ScreenTriangle& t, int width, int height,

@@ -34,21 +34,37 @@ inline bool is_top_left(FixedPoint a, FixedPoint b) {
 }
 // [/doc:top-left]
 
+// The triangle snapped to fixed point and made counter-clockwise, with which
+// input vertex each weight belongs to, and twice its area in 1/256-pixel
+// units squared (0: it covers nothing).
+struct FixedTriangle {
+    FixedPoint v[3];
+    int order[3];
+    std::int64_t area;
+};
+
+inline FixedTriangle fixed_triangle(const ScreenTriangle& t) {
+    FixedTriangle f{{snap(t.v[0]), snap(t.v[1]), snap(t.v[2])}, {0, 1, 2}, 0};
+    f.area = (f.v[1].x - f.v[0].x) * (f.v[2].y - f.v[0].y) -
+             (f.v[1].y - f.v[0].y) * (f.v[2].x - f.v[0].x);
+    if (f.area < 0) {  // make it counter-clockwise; remember the swap
+        std::swap(f.v[1], f.v[2]);
+        std::swap(f.order[1], f.order[2]);
+        f.area = -f.area;
+    }
+    return f;
+}
+
 // [doc:raster-edge]
 template <class FragmentStage>
 bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
                     FragmentStage&& fragment_stage) {
     if (!within_raster_range(t)) return false;  // |x|, |y| <= 2^22: the products fit 62 bits
-    FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
-    std::int64_t area =
-        (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-    if (area == 0) return true;
-    int order[3] = {0, 1, 2};  // which input vertex each weight belongs to
-    if (area < 0) {            // make it counter-clockwise; remember the swap
-        std::swap(v[1], v[2]);
-        std::swap(order[1], order[2]);
-        area = -area;
-    }
+    const FixedTriangle f = fixed_triangle(t);
+    if (f.area == 0) return true;
+    const FixedPoint* v = f.v;
+    const int* order = f.order;
+    const std::int64_t area = f.area;
     // Edge k runs between the two vertices other than k; E_k > 0 inside.
     struct Edge {
         std::int64_t step_x, step_y, row, bias;
@@ -93,30 +109,31 @@ bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
 
 // The weights rasterize_edge hands over at pixel (x, y), computed directly
 // (the same integers as its incremental steps, so the same floats): for a
-// caller that needs them at a pixel the rasterizer reached another way, as
-// lesson 05's pipeline does at a pixel centre when it rasterized a sample.
-inline rl::vec3 edge_weights_at(const ScreenTriangle& t, int x, int y) {
-    FixedPoint v[3] = {snap(t.v[0]), snap(t.v[1]), snap(t.v[2])};
-    std::int64_t area =
-        (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[1].y - v[0].y) * (v[2].x - v[0].x);
-    int order[3] = {0, 1, 2};
-    if (area < 0) {
-        std::swap(v[1], v[2]);
-        std::swap(order[1], order[2]);
-        area = -area;
+// caller that needs them at pixels the rasterizer reached another way, as
+// lesson 05's pipeline does at pixel centres when it rasterized samples.
+// The triangle's setup is done once, on construction.
+class EdgeWeights {
+  public:
+    // (A triangle the rasterizer refuses gets no setup: its products could overflow.)
+    explicit EdgeWeights(const ScreenTriangle& t)
+        : f_(within_raster_range(t) ? fixed_triangle(t) : FixedTriangle{}),
+          inverse_area_(f_.area != 0 ? 1.0f / static_cast<float>(f_.area) : 0.0f) {}
+    rl::vec3 at(int x, int y) const {
+        const FixedPoint p{x * kSubpixels + kSubpixels / 2, y * kSubpixels + kSubpixels / 2};
+        float weight[3];
+        for (int k = 0; k < 3; ++k) {
+            const FixedPoint a = f_.v[(k + 1) % 3], b = f_.v[(k + 2) % 3];
+            weight[f_.order[k]] =
+                static_cast<float>((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
+                inverse_area_;
+        }
+        return {weight[0], weight[1], weight[2]};
     }
-    if (area == 0) return {};
-    const FixedPoint p{x * kSubpixels + kSubpixels / 2, y * kSubpixels + kSubpixels / 2};
-    const float inverse_area = 1.0f / static_cast<float>(area);
-    float weight[3];
-    for (int k = 0; k < 3; ++k) {
-        const FixedPoint a = v[(k + 1) % 3], b = v[(k + 2) % 3];
-        weight[order[k]] =
-            static_cast<float>((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
-            inverse_area;
-    }
-    return {weight[0], weight[1], weight[2]};
-}
+
+  private:
+    FixedTriangle f_;
+    float inverse_area_;
+};
 
 // The whole image: {0, 0, width, height}.
 template <class FragmentStage>

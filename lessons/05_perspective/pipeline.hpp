@@ -304,6 +304,11 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
     const int samples = target.samples();
     const triangles::PixelRect rect =
         options.tile.value_or(triangles::PixelRect{0, 0, target.width(), target.height()});
+    // The weights at pixel centres, for samples that are not at the centre.
+    const std::optional<triangles::PixelWeights> centres =
+        samples == 1
+            ? std::nullopt
+            : std::optional<triangles::PixelWeights>(std::in_place, options.raster, t.screen());
     bool ok = true;
     for (int s = 0; s < samples; ++s) {
         const rl::vec2 offset = sample_offset(samples, s);
@@ -318,8 +323,7 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
                     if (depth && state.write) depth->at(column, y) = z;
                 }
                 if constexpr (has_colour || discards) {
-                    const rl::vec3 centre =
-                        samples == 1 ? b : triangles::weights_at(options.raster, t.screen(), x, y);
+                    const rl::vec3 centre = centres ? centres->at(x, y) : b;
                     const Fragment<V, F> fragment = fragment_at(t, x, y, z, centre);
                     if constexpr (discards) {
                         const auto kept = program.fragment(fragment);

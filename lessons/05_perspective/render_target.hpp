@@ -35,7 +35,6 @@ namespace perspective {
 // Where the samples of a pixel lie, as offsets from its centre in pixels:
 // Direct3D's standard patterns for 1, 2, 4 and 8 samples (multiples of 1/16
 // pixel, so they sit exactly on the rasterizer's 1/256 grid).
-inline constexpr int kMaxSamples = 8;
 inline bool valid_sample_count(int samples) {
     return samples == 1 || samples == 2 || samples == 4 || samples == 8;
 }
@@ -77,8 +76,6 @@ struct TargetOptions {
 template <class... Pixels>
 class RenderTarget {
   public:
-    static constexpr std::size_t kColourAttachments = sizeof...(Pixels);
-
     explicit RenderTarget(int width, int height, const TargetOptions& options = {},
                           Pixels... clear_values)
         : depth_state(options.depth), width_(width), height_(height), samples_(options.samples) {
@@ -101,12 +98,10 @@ class RenderTarget {
     const auto& colour() const {
         return std::get<I>(colour_);
     }
-    std::tuple<rl::Grid<Pixels>...>& attachments() { return colour_; }
 
     rl::FloatImage* depth() { return depth_ ? &*depth_ : nullptr; }
     const rl::FloatImage* depth() const { return depth_ ? &*depth_ : nullptr; }
 
-  public:
     zbuffer::DepthState depth_state;
 
   private:
