@@ -18,7 +18,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -83,7 +82,8 @@ class RenderTarget {
             throw std::invalid_argument("samples per pixel must be 1, 2, 4 or 8, not " +
                                         std::to_string(samples_));
         colour_ = {rl::Grid<Pixels>(width * samples_, height, clear_values)...};
-        if (options.has_depth) depth_.emplace(width * samples_, height, options.depth.clear);
+        if (options.has_depth)
+            depth_ = rl::FloatImage(width * samples_, height, options.depth.clear);
     }
 
     int width() const { return width_; }
@@ -99,15 +99,15 @@ class RenderTarget {
         return std::get<I>(colour_);
     }
 
-    rl::FloatImage* depth() { return depth_ ? &*depth_ : nullptr; }
-    const rl::FloatImage* depth() const { return depth_ ? &*depth_ : nullptr; }
+    rl::FloatImage* depth() { return depth_.empty() ? nullptr : &depth_; }
+    const rl::FloatImage* depth() const { return depth_.empty() ? nullptr : &depth_; }
 
     zbuffer::DepthState depth_state;
 
   private:
     int width_, height_, samples_;
     std::tuple<rl::Grid<Pixels>...> colour_;
-    std::optional<rl::FloatImage> depth_;
+    rl::FloatImage depth_;  // empty: no depth attachment
 };
 
 // The frame of lessons 05-07: one 8-bit colour image and a depth buffer.
