@@ -42,6 +42,10 @@ inline rl::vec3 decode_normal(rl::vec4 texel) {
     return {2 * texel.x - 1, 2 * texel.y - 1, 2 * texel.z - 1};
 }
 
+// A decoded map normal shorter than one byte step (2/255) has no direction
+// the texel's bytes can tell.
+inline constexpr float kShortestMapNormal = 2.0f / 255;
+
 // [doc:normal-mapped-shader]
 struct NormalMappedShader {
     const shading::Uniforms& u;
@@ -70,19 +74,27 @@ struct NormalMappedShader {
     }
 
     // The unit normal at a pixel, in world space: from the map chosen, or
-    // the interpolated one.
+    // the interpolated one. A map texel too close to the middle grey to hold
+    // a direction (filtering a 127/128 checker averages to 0) keeps the
+    // interpolated normal, as lesson 06 does for a zero normal in the OBJ.
     // (dx, dy: the texture coordinates' screen derivatives, for the mip level.)
     rl::vec3 normal_at(const perspective::Fragment<Varyings>& f, rl::vec2 dx, rl::vec2 dy) const {
         const Varyings& v = f.varyings;
-        rl::vec3 n = rl::normalize(v.normal);
+        const rl::vec3 n = rl::normalize(v.normal);
         if (source == NormalMap::tangent && maps.tangent_normals) {
+            const rl::vec3 m = decode_normal(sample(*maps.tangent_normals, v.uv, dx, dy));
+            const float length = rl::length(m);
+            if (!(length >= kShortestMapNormal)) return n;
             // Re-orthogonalise the interpolated frame, then B from N, T and w.
+            // T, B, N are orthonormal, so T m.x + B m.y + N m.z is as long as m.
             const rl::vec3 t = rl::normalize(v.tangent - n * rl::dot(n, v.tangent));
             const rl::vec3 b = rl::cross(n, t) * (v.handedness < 0 ? -1.0f : 1.0f);
-            const rl::vec3 m = decode_normal(sample(*maps.tangent_normals, v.uv, dx, dy));
-            n = rl::normalize(t * m.x + b * m.y + n * m.z);
-        } else if (source == NormalMap::object && maps.object_normals) {
-            n = u.world_normal(decode_normal(sample(*maps.object_normals, v.uv, dx, dy)));
+            return (t * m.x + b * m.y + n * m.z) / length;
+        }
+        if (source == NormalMap::object && maps.object_normals) {
+            const rl::vec3 m = decode_normal(sample(*maps.object_normals, v.uv, dx, dy));
+            if (!(rl::length(m) >= kShortestMapNormal)) return n;
+            return u.world_normal(m);
         }
         return n;
     }

@@ -143,7 +143,7 @@ constexpr T cross(const Vec<2, T>& a, const Vec<2, T>& b) {
 }
 
 template <std::size_t N, typename T>
-T length(const Vec<N, T>& v) {
+[[gnu::always_inline]] inline T length(const Vec<N, T>& v) {
     return std::sqrt(dot(v, v));
 }
 
@@ -153,12 +153,15 @@ Vec<N, T> normalize_scaled(const Vec<N, T>& v);
 // Unit vector in v's direction; the zero vector stays zero rather than
 // turning into NaNs, so a degenerate normal shows up as black, not garbage.
 // A vector whose squared length overflows (components past 1e19 in float)
-// or underflows (below 1e-19) is first scaled by its largest component.
+// or falls below the smallest normal float (components below about 1e-19,
+// whose squares are subnormal and keep too few digits) is first scaled by its
+// largest component. Inlined: it runs several times for every pixel.
 template <std::size_t N, typename T>
-inline Vec<N, T> normalize(const Vec<N, T>& v) {
-    const T len = length(v);
-    if (len > std::numeric_limits<T>::min() && len <= std::numeric_limits<T>::max()) [[likely]]
-        return v / len;
+[[gnu::always_inline]] inline Vec<N, T> normalize(const Vec<N, T>& v) {
+    const T squared = dot(v, v);
+    if (squared >= std::numeric_limits<T>::min() && squared <= std::numeric_limits<T>::max())
+        [[likely]]
+        return v / std::sqrt(squared);
     return normalize_scaled(v);  // out of line: the common case above stays small enough to inline
 }
 

@@ -147,6 +147,30 @@ TEST(NormalMappingTest, AModelWithoutUvsIgnoresItsMapsWithAWarning) {
     std::filesystem::remove_all(dir);
 }
 
+// A map texel at the middle grey (a 127/128 checker filtered to its
+// average decodes to 0) holds no direction: the interpolated normal is kept,
+// in both kinds of map, rather than the pixel going unlit or lit at random.
+TEST(NormalMappingTest, AMapNormalTooShortToHoldADirectionKeepsTheInterpolatedNormal) {
+    rl::Image checker(2, 2, rl::Rgba{127, 127, 127, 255});
+    checker.at(1, 0) = checker.at(0, 1) = rl::Rgba{128, 128, 128, 255};
+    Maps maps;
+    maps.tangent_normals = textures::MipChain(checker);
+    maps.object_normals = textures::MipChain(checker);
+    const shading::Uniforms u{rl::mat4::identity(), rl::mat3::identity(), rl::mat4::identity(),
+                              {0, 0, 5}, shading::default_lighting(rl::vec3{0, 0, 1}),
+                              nullptr, {}, {}};
+    const std::vector<rl::vec4> tangents(3, rl::vec4{1, 0, 0, 1});
+    perspective::Fragment<NormalMappedShader::Varyings> f{};
+    f.varyings = {{0, 0, 0}, {0, 0.6f, 0.8f}, {1, 0, 0}, 1, {0.5f, 0.5f}};  // between the 4 texels
+    for (NormalMap source : {NormalMap::tangent, NormalMap::object}) {
+        NormalMappedShader shader{u, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents};
+        shader.map_filter = textures::Filter::bilinear;
+        const rl::vec3 n = shader.normal_at(f, {}, {});
+        EXPECT_NEAR(n.y, 0.6f, 1e-6f) << name(source);
+        EXPECT_NEAR(n.z, 0.8f, 1e-6f) << name(source);
+    }
+}
+
 TEST(NormalMappingTest, DefaultSceneTileByTileEqualsOneDraw) {
     std::vector<std::string> warnings;
     const std::vector<MappedModel> models = default_scene(TangentMethod::split, warnings);
