@@ -34,22 +34,27 @@ inline bool is_top_left(FixedPoint a, FixedPoint b) {
 }
 // [/doc:top-left]
 
-// The triangle snapped to fixed point and made counter-clockwise, with which
-// input vertex each weight belongs to, and twice its area in 1/256-pixel
-// units squared (0: it covers nothing).
+// The triangle snapped to fixed point and made counter-clockwise (by
+// swapping vertices 1 and 2, remembered so that each weight goes back to its
+// input vertex), and twice its area in 1/256-pixel units squared (0: it
+// covers nothing).
 struct FixedTriangle {
     FixedPoint v[3];
-    int order[3];
+    bool swapped;
     std::int64_t area;
+    // Weights in the snapped triangle's order, in the input's order.
+    rl::vec3 in_input_order(float w0, float w1, float w2) const {
+        return swapped ? rl::vec3{w0, w2, w1} : rl::vec3{w0, w1, w2};
+    }
 };
 
 inline FixedTriangle fixed_triangle(const ScreenTriangle& t) {
-    FixedTriangle f{{snap(t.v[0]), snap(t.v[1]), snap(t.v[2])}, {0, 1, 2}, 0};
+    FixedTriangle f{{snap(t.v[0]), snap(t.v[1]), snap(t.v[2])}, false, 0};
     f.area = (f.v[1].x - f.v[0].x) * (f.v[2].y - f.v[0].y) -
              (f.v[1].y - f.v[0].y) * (f.v[2].x - f.v[0].x);
     if (f.area < 0) {  // make it counter-clockwise; remember the swap
         std::swap(f.v[1], f.v[2]);
-        std::swap(f.order[1], f.order[2]);
+        f.swapped = true;
         f.area = -f.area;
     }
     return f;
@@ -63,7 +68,6 @@ bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
     const FixedTriangle f = fixed_triangle(t);
     if (f.area == 0) return true;
     const FixedPoint* v = f.v;
-    const int* order = f.order;
     const std::int64_t area = f.area;
     // Edge k runs between the two vertices other than k; E_k > 0 inside.
     struct Edge {
@@ -93,11 +97,10 @@ bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
         std::int64_t w0 = e[0].row, w1 = e[1].row, w2 = e[2].row;
         for (int x = xs.first; x <= xs.last; ++x) {
             if ((w0 + e[0].bias) >= 0 && (w1 + e[1].bias) >= 0 && (w2 + e[2].bias) >= 0) {
-                float weight[3];
-                weight[order[0]] = static_cast<float>(w0) * inverse_area;
-                weight[order[1]] = static_cast<float>(w1) * inverse_area;
-                weight[order[2]] = static_cast<float>(w2) * inverse_area;
-                fragment_stage(x, y, rl::vec3{weight[0], weight[1], weight[2]});
+                fragment_stage(x, y,
+                               f.in_input_order(static_cast<float>(w0) * inverse_area,
+                                                static_cast<float>(w1) * inverse_area,
+                                                static_cast<float>(w2) * inverse_area));
             }
             w0 += e[0].step_x, w1 += e[1].step_x, w2 += e[2].step_x;
         }
@@ -123,11 +126,10 @@ class EdgeWeights {
         float weight[3];
         for (int k = 0; k < 3; ++k) {
             const FixedPoint a = f_.v[(k + 1) % 3], b = f_.v[(k + 2) % 3];
-            weight[f_.order[k]] =
-                static_cast<float>((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
-                inverse_area_;
+            weight[k] = static_cast<float>((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
+                        inverse_area_;
         }
-        return {weight[0], weight[1], weight[2]};
+        return f_.in_input_order(weight[0], weight[1], weight[2]);
     }
 
   private:
