@@ -63,8 +63,8 @@ rl::Image downsample(const rl::Image& image, const TexelEncoding* encoding) {
 }
 // [/doc:downsample]
 
-MipChain::MipChain(const rl::Image& image, const TexelEncoding* encoding)
-    : base_(std::make_shared<const rl::Image>(image)),
+MipChain::MipChain(rl::Image image, const TexelEncoding* encoding)
+    : base_(std::make_shared<const rl::Image>(std::move(image))),
       encoding_(encoding),
       smaller_(std::make_shared<Smaller>()) {}
 

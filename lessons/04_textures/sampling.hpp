@@ -59,8 +59,9 @@ class MipChain {
     // (nullptr: the bytes themselves). The smaller levels are built the
     // first time anything asks for them (once, safely from several threads),
     // so a texture only ever sampled by `nearest` or `bilinear` costs no
-    // averaging; copies share them.
-    explicit MipChain(const rl::Image& image, const TexelEncoding* encoding = nullptr);
+    // averaging; copies share them. (The image is taken by value: a caller
+    // done with its image moves it in rather than holding two copies.)
+    explicit MipChain(rl::Image image, const TexelEncoding* encoding = nullptr);
     int levels() const { return 1 + static_cast<int>(smaller().size()); }
     const rl::Image& level(int i) const {
         return i == 0 ? *base_ : smaller()[static_cast<std::size_t>(i - 1)];

@@ -14,7 +14,7 @@ TexturedModel load_model(const std::filesystem::path& path, const rl::mat4& tran
     std::string texture_name =
         diffuse.is_default ? "a plain default" : diffuse.source.filename().string();
     const Box box = bounds(mesh, rl::mat4::identity());
-    return {std::move(mesh), transform, box, textures::MipChain(diffuse.image, encoding),
+    return {std::move(mesh), transform, box, textures::MipChain(std::move(diffuse.image), encoding),
             std::move(texture_name)};
 }
 

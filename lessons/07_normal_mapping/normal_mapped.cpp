@@ -9,9 +9,9 @@ namespace {
 std::optional<textures::MipChain> load_map(const rl::Mesh& mesh, rl::TextureRole role,
                                            std::vector<std::string>& warnings) {
     if (!rl::find_texture(mesh, 0, role)) return std::nullopt;        // the model has none
-    const rl::Texture t = rl::load_texture(mesh, 0, role, warnings);  // warns if unreadable
+    rl::Texture t = rl::load_texture(mesh, 0, role, warnings);  // warns if unreadable
     if (t.is_default) return std::nullopt;
-    return textures::MipChain(t.image);
+    return textures::MipChain(std::move(t.image));
 }
 
 }  // namespace
