@@ -68,6 +68,27 @@ struct ClipPolygon {
 };
 
 // [doc:clip-polygon]
+// Where the edge from `in` (inside the plane) to `out` crosses it, in the
+// clip positions' double. The cut is measured from the inside endpoint, so
+// that the same edge gives the same cut in both triangles that share it and
+// their common edge cannot crack. Then the coordinate the plane fixes is set
+// from the plane's equation (x = -g w for the plane x + g w = 0): between
+// endpoints 1e20 apart even double loses a cut at x = -2 (-1e20 + (1e20 - 2)
+// rounds to 0), but the cut must lie on the plane, and now does exactly.
+template <Interpolable V>
+ClipVertex<V> crossing(const ClipVertex<V>& in, const ClipVertex<V>& out, ClipPlane plane) {
+    const ClipPosition &p = in.position, &q = out.position, n = rl::cast<double>(plane);
+    const double d_in = rl::dot(n, p), d_out = rl::dot(n, q);  // d_in >= 0 > d_out
+    const double t = d_in / (d_in - d_out);                    // in [0, 1]
+    ClipPosition cut = p + (q - p) * t;
+    std::size_t axis = 0;  // the plane's main axis among x, y, z
+    for (std::size_t i = 1; i < 3; ++i)
+        if (std::abs(n[i]) > std::abs(n[axis])) axis = i;
+    if (n[axis] != 0) cut[axis] -= rl::dot(n, cut) / n[axis];  // now dot(n, cut) = 0
+    return {cut,
+            blend(in.varyings, static_cast<float>(1 - t), out.varyings, static_cast<float>(t))};
+}
+
 // One Sutherland-Hodgman pass: keep the vertices inside the plane, and
 // where an edge crosses it, add the crossing. The crossing's parameter t
 // comes from the signed distances d = dot(plane, p), which are linear along
@@ -80,17 +101,17 @@ ClipPolygon<V> clip_against(const ClipPolygon<V>& in, ClipPlane plane) {
         out.vertices[static_cast<std::size_t>(out.size++)] = v;
         return true;
     };
+    const auto inside = [n = rl::cast<double>(plane)](const ClipVertex<V>& v) {
+        return rl::dot(n, v.position) >= 0;
+    };
     for (int i = 0; i < in.size; ++i) {
         const ClipVertex<V>& a = in.vertices[static_cast<std::size_t>(i)];
         const ClipVertex<V>& b = in.vertices[static_cast<std::size_t>((i + 1) % in.size)];
-        const float da = rl::dot(plane, a.position), db = rl::dot(plane, b.position);
-        if (da >= 0 && !add(a)) return {};
-        if ((da >= 0) != (db >= 0)) {  // the edge crosses the plane
-            const float t = da / (da - db);
-            if (!add({a.position + (b.position - a.position) * t,
-                      blend(a.varyings, 1 - t, b.varyings, t)}))
-                return {};
-        }
+        const bool a_inside = inside(a), b_inside = inside(b);
+        if (a_inside && !add(a)) return {};
+        if (a_inside != b_inside &&  // the edge crosses the plane
+            !add(a_inside ? crossing(a, b, plane) : crossing(b, a, plane)))
+            return {};
     }
     return out;
 }
@@ -98,14 +119,15 @@ ClipPolygon<V> clip_against(const ClipPolygon<V>& in, ClipPlane plane) {
 
 // Whether the triangle needs any cutting against these planes: most do not,
 // and they skip clip_triangle's copies.
-inline bool inside_all(const ClipPlanes& planes, const rl::vec4 (&p)[3]) {
+inline bool inside_all(const ClipPlanes& planes, const ClipPosition (&p)[3]) {
     for (int k = 0; k < planes.count; ++k)
-        for (const rl::vec4& q : p)
-            if (!(rl::dot(planes.planes[static_cast<std::size_t>(k)], q) >= 0)) return false;
+        for (const ClipPosition& q : p)
+            if (!(rl::dot(rl::cast<double>(planes.planes[static_cast<std::size_t>(k)]), q) >= 0))
+                return false;
     return true;
 }
 
-inline bool finite(const rl::vec4& p) {
+inline bool finite(const ClipPosition& p) {
     return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
 }
 

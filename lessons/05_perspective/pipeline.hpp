@@ -17,7 +17,7 @@
 //       rl::mat4 mvp; const textures::MipChain& texture;
 //       using Varyings = rl::vec2;                     // texture coordinates
 //       perspective::ClipVertex<rl::vec2> vertex(const perspective::MeshCorner& c) const {
-//           return {mvp * rl::extend(c.position(), 1.0f), c.uv()};
+//           return {perspective::clip_position(mvp, c.position()), c.uv()};
 //       }
 //       rl::Rgba fragment(const perspective::Fragment<rl::vec2>& f) const {
 //           return textures::to_rgba(textures::sample(texture, f.varyings, {f.d_dx(), f.d_dy()},
@@ -30,9 +30,11 @@
 
 #include "rasterlab/named_enum.hpp"
 
+#include <algorithm>
 #include <array>
 #include <concepts>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <type_traits>
@@ -159,6 +161,17 @@ struct TriangleSetup {
     }
 };
 
+// A value of the divide in float. One past float's range (a vertex just in
+// front of the eye when only the near plane clips) becomes +-FLT_MAX, which
+// the rasterizer then refuses, rather than an undefined conversion.
+inline float to_float(double v) {
+    constexpr double kLargest = std::numeric_limits<float>::max();
+    return static_cast<float>(std::clamp(v, -kLargest, kLargest));  // (NaN stays NaN)
+}
+inline rl::vec3 to_float(const rl::dvec3& v) {
+    return {to_float(v.x), to_float(v.y), to_float(v.z)};
+}
+
 // Divide, viewport, and the constants of one triangle of clip-space vertices.
 template <Interpolable V, class F>
 TriangleSetup<V, F> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c,
@@ -168,9 +181,9 @@ TriangleSetup<V, F> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const
     const ClipVertex<V>* v[3] = {&a, &b, &c};
     t.perspective_correct = interpolation == Interpolation::perspective_correct;
     for (int k = 0; k < 3; ++k) {
-        const rl::vec4& p = v[k]->position;
-        const float inverse_w = 1 / p.w;
-        t.window[k] = rl::ndc_to_window(p.xyz() * inverse_w, width, height);
+        const ClipPosition& p = v[k]->position;
+        const float inverse_w = to_float(1 / p.w);
+        t.window[k] = rl::ndc_to_window(to_float(p.xyz() / p.w), width, height);
         t.vertex[k] = v[k]->varyings;
         t.inverse_w[k] = t.perspective_correct ? inverse_w : 1.0f;
         t.over_w[k] = scaled(t.vertex[k], t.inverse_w[k]);
@@ -246,9 +259,9 @@ Fragment<V, F> fragment_at(const TriangleSetup<V, F>& t, int x, int y, float z, 
 // is the sign of the volume of the tetrahedron (eye, v0, v1, v2), so it says
 // which side of the face's plane the eye is on even when some w <= 0, where
 // the window-space area would flip. Positive: counter-clockwise, facing the eye.
-inline float facing(const rl::vec4& a, const rl::vec4& b, const rl::vec4& c) {
-    return rl::dot(rl::vec3{a.x, a.y, a.w},
-                   rl::cross(rl::vec3{b.x, b.y, b.w}, rl::vec3{c.x, c.y, c.w}));
+inline double facing(const ClipPosition& a, const ClipPosition& b, const ClipPosition& c) {
+    return rl::dot(rl::dvec3{a.x, a.y, a.w},
+                   rl::cross(rl::dvec3{b.x, b.y, b.w}, rl::dvec3{c.x, c.y, c.w}));
 }
 
 // Whether a box (in model space) lies wholly outside one plane of the
@@ -263,7 +276,7 @@ ClipPolygon<V> clip_face(const std::array<ClipVertex<V, F>, 3>& v, const ClipPla
     const std::array<ClipVertex<V>, 3> corners = {ClipVertex<V>{v[0].position, v[0].varyings},
                                                   ClipVertex<V>{v[1].position, v[1].varyings},
                                                   ClipVertex<V>{v[2].position, v[2].varyings}};
-    const rl::vec4 positions[3] = {v[0].position, v[1].position, v[2].position};
+    const ClipPosition positions[3] = {v[0].position, v[1].position, v[2].position};
     if (inside_all(planes, positions)) return {{corners[0], corners[1], corners[2]}, 3};
     const ClipPolygon<V> polygon = clip_triangle(corners, planes);
     ++(polygon.size < 3 ? counts.outside : counts.clipped);

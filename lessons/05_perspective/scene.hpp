@@ -70,7 +70,7 @@ struct TexturedProgram {
     const std::vector<float>& light;  // one per face
     using Varyings = rl::vec2;
     ClipVertex<rl::vec2> vertex(const MeshCorner& c) const {
-        return {model_view_projection * rl::extend(c.position(), 1.0f), c.uv()};
+        return {clip_position(model_view_projection, c.position()), c.uv()};
     }
     rl::Rgba fragment(const Fragment<rl::vec2>& f) const;
 };

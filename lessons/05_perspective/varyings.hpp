@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <type_traits>
 
+#include "rasterlab/mat.hpp"
 #include "rasterlab/vec.hpp"
 
 namespace perspective {
@@ -57,6 +58,19 @@ V weighted(const V (&v)[3], rl::vec3 w) {
     return std::bit_cast<V>(x);
 }
 
+// A clip-space position, in double. In float, a vertex 1e5 away holds its z
+// and w to about 0.004, and the near plane's distance z + w of a point 0.001
+// in front of the eye is lost in that: clipping would put the cut vertex
+// anywhere within a few thousandths of the eye, and its depth with it
+// (docs/05_perspective.md#clipping). Computed in double
+// from the float model position, z + w keeps its digits.
+using ClipPosition = rl::dvec4;
+
+// The clip position of model point p under the matrix m, in double.
+inline ClipPosition clip_position(const rl::mat4& m, rl::vec3 p) {
+    return rl::cast<double>(m) * ClipPosition{p.x, p.y, p.z, 1.0};
+}
+
 // A vertex as the vertex stage hands it on: a clip-space position, the
 // varyings to interpolate, and the values that stay the same across the
 // triangle (`Flat`, taken from its first vertex: see pipeline.hpp).
@@ -64,7 +78,7 @@ struct NoFlat {};
 
 template <Interpolable V, class Flat = NoFlat>
 struct ClipVertex {
-    rl::vec4 position;
+    ClipPosition position;
     V varyings;
     [[no_unique_address]] Flat flat{};
 };

@@ -39,7 +39,9 @@ struct Uniforms {
 
     rl::vec3 world(rl::vec3 p) const { return (model_matrix * rl::extend(p, 1.0f)).xyz(); }
     rl::vec3 world_normal(rl::vec3 n) const { return rl::normalize(normal_matrix * n); }
-    rl::vec4 clip(rl::vec3 p) const { return model_view_projection * rl::extend(p, 1.0f); }
+    perspective::ClipPosition clip(rl::vec3 p) const {
+        return perspective::clip_position(model_view_projection, p);
+    }
     // The diffuse colour at a pixel: the texture (mip level from the pixel's
     // UV derivatives, lesson 05) or the plain colour.
     rl::vec3 albedo(rl::vec2 uv, rl::vec2 d_dx, rl::vec2 d_dy) const;
@@ -56,7 +58,7 @@ struct UnlitShader {
     rl::vec3 colour;         // linear
     using Varyings = float;  // nothing to carry to the pixels
     perspective::ClipVertex<float> vertex(const SurfaceCorner& in) const {
-        return {model_view_projection * rl::extend(in.position(), 1.0f), 0.0f};
+        return {perspective::clip_position(model_view_projection, in.position()), 0.0f};
     }
     rl::vec3 fragment(const perspective::Fragment<float>&) const { return colour; }
 };

@@ -37,6 +37,14 @@ using mat4 = Mat<4, float>;
 using dmat3 = Mat<3, double>;
 using dmat4 = Mat<4, double>;
 
+// The matrix with its entries converted: cast<double>(m).
+template <typename To, std::size_t N, typename From>
+constexpr Mat<N, To> cast(const Mat<N, From>& m) {
+    Mat<N, To> r;
+    for (std::size_t i = 0; i < N; ++i) r[i] = cast<To>(m[i]);
+    return r;
+}
+
 template <std::size_t N, typename T>
 constexpr bool operator==(const Mat<N, T>& a, const Mat<N, T>& b) {
     for (std::size_t r = 0; r < N; ++r)

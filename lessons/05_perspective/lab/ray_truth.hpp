@@ -72,7 +72,7 @@ struct WorldProgram {
     using Varyings = rl::vec2;
     ClipVertex<rl::vec2> vertex(const WorldCorner& c) const {
         const auto k = static_cast<std::size_t>(c.corner);
-        return {view_projection * rl::extend(rl::cast<float>(c.triangle->p[k]), 1.0f),
+        return {clip_position(view_projection, rl::cast<float>(c.triangle->p[k])),
                 rl::cast<float>(c.triangle->uv[k])};
     }
     std::tuple<int, rl::vec2> fragment(const Fragment<rl::vec2>& f) const {

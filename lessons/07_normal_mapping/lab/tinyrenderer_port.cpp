@@ -17,13 +17,6 @@ using dvec4 = rl::Vec<4, double>;
 using dmat3 = rl::Mat<3, double>;
 using dmat4 = rl::Mat<4, double>;
 
-dmat4 to_double(const rl::mat4& m) {
-    dmat4 out;
-    for (std::size_t r = 0; r < 4; ++r)
-        for (std::size_t c = 0; c < 4; ++c) out[r][c] = m[r][c];
-    return out;
-}
-
 dvec4 point(rl::vec3 p) {
     return {p.x, p.y, p.z, 1.0};
 }
@@ -161,8 +154,8 @@ Result render(const rl::Mesh& mesh, const Textures& textures, const perspective:
     Result out{rl::Image(width, height, rl::kBackground), 0};
     std::vector<double> zbuffer(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),
                                 std::numeric_limits<double>::max());
-    const dmat4 view = to_double(*rl::look_at(camera.eye, camera.target, camera.up));
-    const dmat4 projection = to_double(
+    const dmat4 view = rl::cast<double>(*rl::look_at(camera.eye, camera.target, camera.up));
+    const dmat4 projection = rl::cast<double>(
         rl::perspective(camera.fov_y, float(width) / float(height), camera.near, camera.far));
     PhongShader shader(mesh, textures, view, projection, rl::cast<double>(light));
     dmat3 eye_to_world;  // the view's rotation, undone (for the probe only)

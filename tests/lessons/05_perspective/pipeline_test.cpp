@@ -63,7 +63,7 @@ struct Constant {
     rl::Rgba colour;
     using Varyings = rl::vec2;  // NDC x, y
     ClipVertex<rl::vec2> vertex(const ClipCorner& c) const {
-        return {c.position, {c.position.x, c.position.y}};
+        return {rl::cast<double>(c.position), {c.position.x, c.position.y}};
     }
     rl::Rgba fragment(const Fragment<rl::vec2>&) const { return colour; }
 };
@@ -71,7 +71,9 @@ struct Constant {
 struct DepthOnly {
     int* fragment_calls;
     using Varyings = float;
-    ClipVertex<float> vertex(const ClipCorner& c) const { return {c.position, 0.0f}; }
+    ClipVertex<float> vertex(const ClipCorner& c) const {
+        return {rl::cast<double>(c.position), 0.0f};
+    }
     rl::Rgba fragment(const Fragment<float>&) const {
         ++*fragment_calls;
         return {};
@@ -90,7 +92,7 @@ TEST(Pipeline, DepthOnlyPassWritesDepthAndShadesNothing) {
 struct Two {
     using Varyings = rl::vec2;
     ClipVertex<rl::vec2> vertex(const ClipCorner& c) const {
-        return {c.position, {c.position.x, c.position.y}};
+        return {rl::cast<double>(c.position), {c.position.x, c.position.y}};
     }
     std::tuple<rl::Rgba, rl::vec3> fragment(const Fragment<rl::vec2>& f) const {
         return {rl::Rgba{10, 20, 30, 255}, rl::vec3{f.varyings.x, f.varyings.y, 1}};
@@ -110,7 +112,9 @@ TEST(Pipeline, OnePassFillsTwoOutputs) {
 
 struct Bright {
     using Varyings = float;
-    ClipVertex<float> vertex(const ClipCorner& c) const { return {c.position, 0.0f}; }
+    ClipVertex<float> vertex(const ClipCorner& c) const {
+        return {rl::cast<double>(c.position), 0.0f};
+    }
     rl::vec3 fragment(const Fragment<float>&) const { return {4.0f, 2.5f, 1000.0f}; }
 };
 
@@ -195,7 +199,7 @@ TEST(Pipeline, DepthStateComparesAndWritesAsStated) {
 struct Pattern {
     using Varyings = rl::vec2;
     ClipVertex<rl::vec2> vertex(const ClipCorner& c) const {
-        return {c.position, {c.position.x * 3.7f, c.position.y * 5.1f}};
+        return {rl::cast<double>(c.position), {c.position.x * 3.7f, c.position.y * 5.1f}};
     }
     rl::Rgba fragment(const Fragment<rl::vec2>& f) const {
         const auto byte = [](float v) {
@@ -256,7 +260,7 @@ struct Provoking {
     using Varyings = float;
     using Flat = float;
     ClipVertex<float, float> vertex(const MeshCorner& c) const {
-        return {vp * rl::extend(c.position(), 1.0f), 0.0f, static_cast<float>(c.corner + 1)};
+        return {clip_position(vp, c.position()), 0.0f, static_cast<float>(c.corner + 1)};
     }
     float fragment(const Fragment<float, float>& f) const { return f.flat(); }
 };

@@ -199,7 +199,7 @@ struct DiscardEverything {
     using Varyings = float;
     static constexpr bool may_discard = true;
     perspective::ClipVertex<float> vertex(const SurfaceCorner& in) const {
-        return {mvp * rl::extend(in.position(), 1.0f), 0.0f};
+        return {perspective::clip_position(mvp, in.position()), 0.0f};
     }
     std::optional<rl::vec3> fragment(const perspective::Fragment<float>&) const {
         return std::nullopt;
