@@ -89,13 +89,15 @@ Colour<T> reflected(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3, T> 
 
 // The lesson's two lights: a key light from `direction` and a dim fill light
 // from the opposite side, below, so that no face is left pure black.
+// (The fill's direction is built from the key's unit direction: from the raw
+// one, --light 1 1 1 and --light 3 3 3 would light the scene differently.)
 template <class T>
 Lighting<T> default_lighting(rl::Vec<3, T> direction) {
+    const rl::Vec<3, T> key = rl::normalize(direction);
     Lighting<T> lighting;
-    lighting.lights.push_back({rl::normalize(direction), {T(1), T(0.97), T(0.92)}});
+    lighting.lights.push_back({key, {T(1), T(0.97), T(0.92)}});
     lighting.lights.push_back(
-        {rl::normalize(rl::Vec<3, T>{-direction.x, -T(0.3) * std::abs(direction.y) - T(0.2),
-                                     -direction.z * T(0.5)}),
+        {rl::normalize(rl::Vec<3, T>{-key.x, -T(0.3) * std::abs(key.y) - T(0.2), -key.z * T(0.5)}),
          {T(0.12), T(0.14), T(0.18)}});
     return lighting;
 }

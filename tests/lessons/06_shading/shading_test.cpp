@@ -192,6 +192,24 @@ TEST(ShadingTest, GrazingLightAndExtremeExponentsStayFinite) {
                 1e-6f);
 }
 
+// A direction is a direction: --light 1 1 1 and --light 3 3 3 light alike,
+// the fill light included (issue 17: its direction was built from the raw
+// vector, and the two differed by up to 40 levels).
+TEST(ShadingTest, TheLightsDependOnlyOnTheLightsDirectionNotItsLength) {
+    for (const rl::vec3& d : {rl::vec3{1, 1, 1}, rl::vec3{0.3f, 0.5f, 1}, rl::vec3{-2, 0.1f, 4}}) {
+        const Lighting<float> unit = default_lighting(rl::normalize(d)),
+                              longer = default_lighting(d * 3.0f),
+                              shorter = default_lighting(d * 0.01f);
+        ASSERT_EQ(unit.lights.size(), longer.lights.size());
+        for (std::size_t i = 0; i < unit.lights.size(); ++i)
+            for (std::size_t k = 0; k < 3; ++k) {
+                EXPECT_NEAR(longer.lights[i].direction[k], unit.lights[i].direction[k], 1e-6f) << d;
+                EXPECT_NEAR(shorter.lights[i].direction[k], unit.lights[i].direction[k], 1e-6f)
+                    << d;
+            }
+    }
+}
+
 // A shader that discards every pixel must leave the depth buffer alone, so
 // that what lies behind is still drawn (the late depth test).
 struct DiscardEverything {
