@@ -4,36 +4,43 @@
 
 namespace shading {
 
-rl::vec3 area_normal(const rl::Mesh& mesh, const rl::Face& face) {
-    const rl::vec3 p0 = mesh.position(face, 0), p1 = mesh.position(face, 1),
-                   p2 = mesh.position(face, 2);
-    return rl::cross(p1 - p0, p2 - p0);
+namespace {
+rl::dvec3 position(const rl::Mesh& mesh, const rl::Face& face, int k) {
+    return rl::cast<double>(mesh.position(face, k));
+}
+}  // namespace
+
+rl::dvec3 area_normal(const rl::Mesh& mesh, const rl::Face& face) {
+    const rl::dvec3 p0 = position(mesh, face, 0);
+    return rl::cross(position(mesh, face, 1) - p0, position(mesh, face, 2) - p0);
 }
 
-float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k) {
-    const rl::vec3 p = mesh.position(face, k);
-    const rl::vec3 a = mesh.position(face, (k + 1) % 3) - p,
-                   b = mesh.position(face, (k + 2) % 3) - p;
-    const float la = rl::length(a), lb = rl::length(b);
+double corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k) {
+    const rl::dvec3 p = position(mesh, face, k);
+    const rl::dvec3 a = position(mesh, face, (k + 1) % 3) - p,
+                    b = position(mesh, face, (k + 2) % 3) - p;
+    const double la = rl::length(a), lb = rl::length(b);
     if (!(la > 0 && lb > 0)) return 0;
-    return std::acos(std::clamp(rl::dot(a, b) / (la * lb), -1.0f, 1.0f));
+    return std::acos(std::clamp(rl::dot(a, b) / (la * lb), -1.0, 1.0));
 }
 
 // [doc:vertex-normals]
 std::vector<rl::vec3> vertex_normals(const rl::Mesh& mesh, Weighting weighting) {
-    std::vector<rl::vec3> sum(mesh.positions.size());
+    std::vector<rl::dvec3> sum(mesh.positions.size());
     for (const rl::Face& face : mesh.faces) {
-        const rl::vec3 n = area_normal(mesh, face);  // length: twice the area
-        const rl::vec3 unit = rl::normalize(n);
+        const rl::dvec3 n = area_normal(mesh, face);  // length: twice the area
+        const rl::dvec3 unit = rl::normalize(n);
         for (int k = 0; k < 3; ++k) {
-            const rl::vec3 add =
+            const rl::dvec3 add =
                 weighting == Weighting::area ? n : unit * corner_angle(mesh, face, k);
             sum[static_cast<std::size_t>(face.corners[static_cast<std::size_t>(k)].position)] +=
                 add;
         }
     }
-    for (rl::vec3& n : sum) n = rl::normalize(n);  // zero stays zero
-    return sum;
+    std::vector<rl::vec3> out;
+    out.reserve(sum.size());
+    for (const rl::dvec3& n : sum) out.push_back(rl::cast<float>(rl::normalize(n)));  // 0 stays 0
+    return out;
 }
 // [/doc:vertex-normals]
 
@@ -52,7 +59,7 @@ std::vector<rl::vec3> corner_normals(const rl::Mesh& mesh, Weighting weighting,
                 ++not_from_obj;
                 if (averaged.empty()) averaged = vertex_normals(mesh, weighting);
                 n = averaged[static_cast<std::size_t>(c.position)];
-                if (rl::length(n) == 0) n = rl::normalize(area_normal(mesh, face));
+                if (rl::length(n) == 0) n = rl::cast<float>(rl::normalize(area_normal(mesh, face)));
             }
             out.push_back(n);
         }

@@ -18,12 +18,14 @@
 namespace shading {
 
 // Twice the face's area times its unit normal: counter-clockwise faces point
-// towards the side they are seen counter-clockwise from.
-rl::vec3 area_normal(const rl::Mesh& mesh, const rl::Face& face);
+// towards the side they are seen counter-clockwise from. In double: the
+// cross product of float edges longer than about 1.9e19 overflows a float,
+// and one such face would make every vertex normal it touches infinite.
+rl::dvec3 area_normal(const rl::Mesh& mesh, const rl::Face& face);
 
 // The angle of the face at its corner k, in radians (0 when an edge there
-// has no length).
-float corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k);
+// has no length), in double for the same reason.
+double corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k);
 
 // How a vertex's faces are weighted when its normal is their average: by
 // area (a big face counts more), or by the angle the face makes at the

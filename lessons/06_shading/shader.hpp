@@ -31,7 +31,9 @@ struct SurfaceCorner : perspective::MeshCorner {
     rl::vec3 normal() const {
         return (*normals)[3 * static_cast<std::size_t>(face) + static_cast<std::size_t>(corner)];
     }
-    rl::vec3 face_normal() const { return rl::normalize(area_normal(*mesh, mesh_face())); }
+    rl::vec3 face_normal() const {
+        return rl::cast<float>(rl::normalize(area_normal(*mesh, mesh_face())));
+    }
 };
 
 // A mesh with a normal per corner, ready to shade; mirroring as lesson 05's

@@ -29,15 +29,18 @@ rl::vec4 orthonormal_frame(rl::vec3 n, rl::vec3 t, rl::vec3 b) {
 
 // [doc:face-frame]
 FaceFrame face_frame(const rl::Mesh& mesh, const rl::Face& face) {
-    const rl::vec3 e1 = mesh.position(face, 1) - mesh.position(face, 0);
-    const rl::vec3 e2 = mesh.position(face, 2) - mesh.position(face, 0);
-    const rl::vec2 d1 = uv_of(mesh, face, 1) - uv_of(mesh, face, 0);
-    const rl::vec2 d2 = uv_of(mesh, face, 2) - uv_of(mesh, face, 0);
-    const float det = rl::cross(d1, d2);       // du1 dv2 - du2 dv1: twice the UV area, signed
-    if (!(std::abs(det) > 1e-12f)) return {};  // no UV area (or NaN): no frame fits
-    const float inverse = 1 / det;
-    FaceFrame f{(e1 * d2.y - e2 * d1.y) * inverse, (e2 * d1.x - e1 * d2.x) * inverse, true};
-    f.valid = finite(f.tangent) && finite(f.bitangent);
+    // In double: a UV of 2.6e34 or an edge of 1e20 would overflow the
+    // products in float and leave an infinite tangent.
+    const auto position = [&](int k) { return rl::cast<double>(mesh.position(face, k)); };
+    const auto uv = [&](int k) { return rl::cast<double>(uv_of(mesh, face, k)); };
+    const rl::dvec3 e1 = position(1) - position(0), e2 = position(2) - position(0);
+    const rl::dvec2 d1 = uv(1) - uv(0), d2 = uv(2) - uv(0);
+    const double det = rl::cross(d1, d2);     // du1 dv2 - du2 dv1: twice the UV area, signed
+    if (!(std::abs(det) > 1e-12)) return {};  // no UV area (or NaN): no frame fits
+    const rl::dvec3 t = (e1 * d2.y - e2 * d1.y) / det, b = (e2 * d1.x - e1 * d2.x) / det;
+    FaceFrame f{rl::cast<float>(rl::normalize(t)), rl::cast<float>(rl::normalize(b)), true};
+    f.valid = finite(f.tangent) && finite(f.bitangent) && rl::length(f.tangent) > 0.5f &&
+              rl::length(f.bitangent) > 0.5f;
     return f;
 }
 // [/doc:face-frame]
@@ -68,38 +71,54 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
     }
     // Per vertex: each position holds one or more slots, each summing the
     // unit T and B of its faces weighted by the face's area times its angle
-    // at the vertex.
-    // `split` opens a new slot for a face whose UVs run the other way
-    // (opposite handedness) or turn away (T + B against the slot's).
+    // at the vertex (in double: the weight of a face 1e19 across overflows a
+    // float).
+    // `split` opens a new slot for a face whose frame disagrees with every
+    // slot's: opposite handedness (mirrored UVs), or a tangent more than 45
+    // degrees from the slot's (UVs turned, as an island rotated 90 degrees
+    // is). A position holds at most kMaxSlots; a face that agrees with none
+    // of them then joins the nearest of its handedness, so the work stays
+    // linear in the faces around a vertex however many there are.
     struct Slot {
-        rl::vec3 tangent, bitangent;
+        rl::dvec3 tangent, bitangent;
         bool right_handed;
+    };
+    constexpr std::size_t kMaxSlots = 8;
+    constexpr double kSplitCosine = 0.70710678;  // cos 45 degrees
+    const auto agreement = [](const Slot& slot, const rl::dvec3& t) {
+        return rl::dot(rl::normalize(slot.tangent), t);  // (a zero slot agrees with nothing)
     };
     std::vector<std::vector<Slot>> slots(mesh.positions.size());
     std::vector<std::size_t> slot_of(mesh.faces.size() * 3, 0);
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         if (!frames[f].valid) continue;
         const rl::Face& face = mesh.faces[f];
-        const rl::vec3 twice_area = rl::cross(mesh.position(face, 1) - mesh.position(face, 0),
-                                              mesh.position(face, 2) - mesh.position(face, 0));
-        const rl::vec3 n = rl::normalize(twice_area);
-        const float area = rl::length(twice_area) / 2;
-        const rl::vec3 t = rl::normalize(frames[f].tangent), b = rl::normalize(frames[f].bitangent);
+        const rl::dvec3 twice_area = shading::area_normal(mesh, face);
+        const rl::dvec3 n = rl::normalize(twice_area);
+        const double area = rl::length(twice_area) / 2;
+        const rl::dvec3 t = rl::cast<double>(frames[f].tangent),
+                        b = rl::cast<double>(frames[f].bitangent);
         const bool right_handed = rl::dot(rl::cross(t, b), n) > 0;
         for (int k = 0; k < 3; ++k) {
             auto& here =
                 slots[static_cast<std::size_t>(face.corners[static_cast<std::size_t>(k)].position)];
             std::size_t s = 0;
-            if (method == TangentMethod::split)
-                for (; s < here.size(); ++s) {
-                    const rl::vec3 half = here[s].tangent + here[s].bitangent;
-                    if (here[s].right_handed == right_handed &&
-                        rl::dot(t + b, half - n * rl::dot(half, n)) >= 0)
-                        break;
+            if (method == TangentMethod::split) {
+                std::size_t nearest = here.size();
+                double best = -2;
+                for (s = 0; s < here.size(); ++s) {
+                    if (here[s].right_handed != right_handed) continue;
+                    const double a = agreement(here[s], t);
+                    if (a > kSplitCosine) break;
+                    if (nearest == here.size() || a > best) best = a, nearest = s;  // (a NaN a too)
                 }
+                if (s == here.size() && here.size() >= kMaxSlots && nearest < here.size())
+                    s = nearest;
+            }
             if (s == here.size()) here.push_back({{}, {}, right_handed});
-            // The seed notes' weight: the face's area times its angle here.
-            const float weight = shading::corner_angle(mesh, face, k) * area;
+            // The weight: the face's area (a big face counts more) times its
+            // angle here (so that cutting a face in two does not count it twice).
+            const double weight = shading::corner_angle(mesh, face, k) * area;
             here[s].tangent += t * weight;
             here[s].bitangent += b * weight;
             slot_of[3 * f + static_cast<std::size_t>(k)] = s;
@@ -114,7 +133,8 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
                 continue;
             }
             const Slot& s = here[slot_of[3 * f + k]];
-            out[3 * f + k] = orthonormal_frame(n, s.tangent, s.bitangent);
+            out[3 * f + k] = orthonormal_frame(n, rl::cast<float>(rl::normalize(s.tangent)),
+                                               rl::cast<float>(rl::normalize(s.bitangent)));
         }
     return out;
 }

@@ -5,8 +5,9 @@
 //   face    each face's own frame, from its UV edges;
 //   vertex  frames averaged over the faces around each vertex (weighted by
 //           each face's area times its angle at the vertex);
-//   split   the same, but a vertex's faces whose UVs are mirrored (or turned
-//           away) from each other get separate frames, as the seam needs.
+//   split   the same, but a vertex's faces whose frames disagree (UVs
+//           mirrored, or turned more than 45 degrees from each other) get
+//           separate frames, as a seam needs.
 // Each frame is orthogonalised against the corner's normal and stored as
 // (T, w): B = w * cross(N, T), w = +1 or -1 (the UVs' handedness).
 // Derivations: docs/07_normal_mapping.md#tangent-frames.
@@ -32,10 +33,11 @@ inline const char* name(TangentMethod value) {
     return rl::name_in(kTangentMethodNames, value);
 }
 
-// A face's T and B: the solution of  [e1; e2] = [du1 dv1; du2 dv2] [T; B]
-// for its edges e1, e2 and their UV differences. `valid` is false when the
-// UV triangle has no area (or a coordinate is not finite): then no T and B
-// fit, and the face takes a frame built from its normal alone.
+// A face's T and B, as unit vectors: the directions of the solution of
+// [e1; e2] = [du1 dv1; du2 dv2] [T; B] for its edges e1, e2 and their UV
+// differences. `valid` is false when the UV triangle has no area (or a
+// coordinate is not finite): then no T and B fit, and the face takes a frame
+// built from its normal alone.
 struct FaceFrame {
     rl::vec3 tangent, bitangent;
     bool valid = false;

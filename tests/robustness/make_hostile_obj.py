@@ -8,6 +8,10 @@ too big to keep in the repository:
                                     took 23 s in tinyobjloader's ear clipping)
   make_hostile_obj.py big MIB OUT   a valid triangle padded with comments to
                                     MIB mebibytes, for the OBJ size cap
+  make_hostile_obj.py fan N OUT     N triangles 3e38 across around one shared
+                                    vertex (80 000 once took 11.6 s in the
+                                    split tangents' slot search: their float
+                                    weights were NaN, so no face joined a slot)
   make_hostile_obj.py rle_texture   huge_rle.obj/.mtl/.tga in the current folder:
                                     a triangle whose texture is a valid 16384^2
                                     RLE TGA of 10 MiB that decodes to 1 GiB
@@ -30,6 +34,17 @@ def soup(out):
             # Wound both ways, so that back-face culling keeps about half.
             a, b, c = 3 * i + 1, 3 * i + 2, 3 * i + 3
             f.write("f %d %d %d\n" % ((a, b, c) if i % 2 else (a, c, b)))
+
+
+def fan(n, out):
+    with open(out, "w") as f:
+        f.write("v 0 0 0\n")
+        for i in range(n + 1):
+            angle = 2 * math.pi * i / n
+            f.write("v %.7g %.7g 0\n" % (3e38 * math.cos(angle), 3e38 * math.sin(angle)))
+        f.write("vt 0 0\nvt 1 0\nvt 0 1\n")
+        for i in range(n):
+            f.write("f 1/1 %d/2 %d/3\n" % (i + 2, i + 3))
 
 
 def face(n, out):
@@ -68,6 +83,8 @@ if __name__ == "__main__":
         soup(sys.argv[2])
     elif kind == "face":
         face(int(sys.argv[2]), sys.argv[3])
+    elif kind == "fan":
+        fan(int(sys.argv[2]), sys.argv[3])
     elif kind == "big":
         big(int(sys.argv[2]), sys.argv[3])
     elif kind == "rle_texture":

@@ -96,6 +96,73 @@ void expect_orthonormal(const std::vector<rl::vec4>& t, const std::vector<rl::ve
     }
 }
 
+// A flat strip of two squares sharing the edge x = 1 (its positions, not
+// its UVs): the left square mapped with u = x, v = y; the right one with
+// UVs `right` (per vertex 2, 5, 6, 3 of the strip).
+rl::Mesh two_islands(const char* right) {
+    return rl::parse_obj(std::string("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nv 2 1 0\n"
+                                     "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n") +
+                             right + "f 1/1 2/2 3/3\nf 1/1 3/3 4/4\nf 2/5 5/6 6/7\nf 2/5 6/7 3/8\n",
+                         "", "islands.obj");
+}
+
+// The largest angle (degrees) between a corner's frame and its own face's
+// exact frame (the mesh is flat, so each face's frame is the truth), 180
+// where the handedness is wrong.
+double largest_frame_error(const rl::Mesh& mesh, TangentMethod method) {
+    const std::vector<rl::vec3> normals = shading::corner_normals(mesh, shading::Weighting::angle);
+    const std::vector<rl::vec4> t = corner_tangents(mesh, normals, method);
+    double largest = 0;
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        const FaceFrame exact = face_frame(mesh, mesh.faces[f]);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const rl::vec4 c = t[3 * f + k];
+            const float w = rl::dot(rl::cross(normals[3 * f + k], exact.tangent), exact.bitangent);
+            const double cosine = std::clamp(double(rl::dot(c.xyz(), exact.tangent)), -1.0, 1.0);
+            largest = std::max(largest,
+                               (c.w < 0) != (w < 0) ? 180.0 : std::acos(cosine) * 180 / 3.14159265);
+        }
+    }
+    return largest;
+}
+
+// Where two UV islands meet on shared positions, split frames keep each
+// island's own frame and averaged ones do not: a mirrored island (u runs the
+// other way) and one turned 90 degrees (issue 17: the split test passed a
+// T + B dot product of exactly 0 there, the frames were averaged, 45 degrees
+// wrong at the seam). Issue 18: making split frames behave like unsplit ones
+// passed every test before this one.
+TEST(NormalMappingTest, SplitFramesKeepEachIslandsFrameAtMirroredAndTurnedSeams) {
+    const rl::Mesh mirrored = two_islands("vt 1 0\nvt 0 0\nvt 0 1\nvt 1 1\n");  // u = 2 - x
+    const rl::Mesh turned = two_islands("vt 0 1\nvt 0 0\nvt 1 0\nvt 1 1\n");    // u = y, v = 2 - x
+    for (const rl::Mesh* mesh : {&mirrored, &turned}) {
+        EXPECT_LT(largest_frame_error(*mesh, TangentMethod::split), 0.1);
+        EXPECT_GT(largest_frame_error(*mesh, TangentMethod::vertex), 10.0);
+        EXPECT_LT(largest_frame_error(*mesh, TangentMethod::face), 0.1);
+    }
+}
+
+// One face far past a float's squared range (edges of 3e19: the cross
+// product is 1e39) sharing a vertex with an ordinary face: every normal and
+// frame stays finite and unit, and the ordinary face keeps its own normal at
+// its other corners (issue 17: the shared vertex's normal was infinite and
+// the neighbour drawn unlit). A UV of 2.6e34 likewise keeps the frames finite.
+TEST(NormalMappingTest, AHugeFaceOrUvCannotPoisonItsNeighboursNormalsOrFrames) {
+    const rl::Mesh mesh = rl::parse_obj(
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -3e19 0 0\nv 0 -3e19 1e19\n"
+        "vt 0 0\nvt 1 0\nvt 0 1\nvt 2.6e34 0\n"
+        "f 1/1 2/2 3/3\nf 1/1 4/4 5/3\n",
+        "", "huge.obj");
+    for (shading::Weighting w : {shading::Weighting::angle, shading::Weighting::area}) {
+        const std::vector<rl::vec3> normals = shading::corner_normals(mesh, w);
+        for (const rl::vec3& n : normals) EXPECT_NEAR(rl::length(n), 1.0f, 1e-5f) << n;
+        EXPECT_NEAR(normals[1].z, 1.0f, 1e-6f);  // the ordinary face's own corners
+        EXPECT_NEAR(normals[2].z, 1.0f, 1e-6f);
+        for (TangentMethod m : kTangentMethods)
+            expect_orthonormal(corner_tangents(mesh, normals, m), normals);
+    }
+}
+
 TEST(NormalMappingTest, ZeroAreaUvTrianglesGetAFallbackFrame) {
     const rl::Mesh mesh = rl::parse_obj(
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5 0.5\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n", "", "flat.obj");
@@ -156,9 +223,14 @@ TEST(NormalMappingTest, AMapNormalTooShortToHoldADirectionKeepsTheInterpolatedNo
     Maps maps;
     maps.tangent_normals = textures::MipChain(checker);
     maps.object_normals = textures::MipChain(checker);
-    const shading::Uniforms u{rl::mat4::identity(), rl::mat3::identity(), rl::mat4::identity(),
-                              {0, 0, 5}, shading::default_lighting(rl::vec3{0, 0, 1}),
-                              nullptr, {}, {}};
+    const shading::Uniforms u{rl::mat4::identity(),
+                              rl::mat3::identity(),
+                              rl::mat4::identity(),
+                              {0, 0, 5},
+                              shading::default_lighting(rl::vec3{0, 0, 1}),
+                              nullptr,
+                              {},
+                              {}};
     const std::vector<rl::vec4> tangents(3, rl::vec4{1, 0, 0, 1});
     perspective::Fragment<NormalMappedShader::Varyings> f{};
     f.varyings = {{0, 0, 0}, {0, 0.6f, 0.8f}, {1, 0, 0}, 1, {0.5f, 0.5f}};  // between the 4 texels
