@@ -4,11 +4,13 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
 #include <climits>
 #include <csignal>
 #include <cstring>
+#include <mutex>
 #include <new>
 #include <random>
 #include <utility>
@@ -126,7 +128,54 @@ void write_all(int fd, std::span<const std::uint8_t> bytes, const std::filesyste
     }
 }
 
+// Every file this run has read: device, inode and the path it was read by.
+struct InputFile {
+    dev_t device;
+    ino_t inode;
+    std::filesystem::path path;
+};
+std::mutex inputs_mutex;
+std::vector<InputFile>& inputs() {
+    static std::vector<InputFile> files;
+    return files;
+}
+
+void remember_input(const struct stat& info, const std::filesystem::path& path) {
+    const std::lock_guard<std::mutex> lock(inputs_mutex);
+    for (const InputFile& f : inputs())
+        if (f.device == info.st_dev && f.inode == info.st_ino) return;
+    inputs().push_back({info.st_dev, info.st_ino, path});
+}
+
 }  // namespace
+
+std::filesystem::path read_as_input(const std::filesystem::path& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) return {};
+    const std::lock_guard<std::mutex> lock(inputs_mutex);
+    for (const InputFile& f : inputs())
+        if (f.device == info.st_dev && f.inode == info.st_ino) return f.path;
+    return {};
+}
+
+void forget_inputs() {
+    const std::lock_guard<std::mutex> lock(inputs_mutex);
+    inputs().clear();
+}
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+    struct stat x {
+    }, y{};
+    const bool a_exists = ::stat(a.c_str(), &x) == 0, b_exists = ::stat(b.c_str(), &y) == 0;
+    if (a_exists && b_exists) return x.st_dev == y.st_dev && x.st_ino == y.st_ino;
+    if (a_exists != b_exists) return false;
+    std::error_code ec_a, ec_b;
+    const std::filesystem::path ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a),
+                                                                       ec_a),
+                                cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b),
+                                                                       ec_b);
+    return !ec_a && !ec_b && ca == cb;
+}
 
 std::vector<std::uint8_t> read_file(const std::filesystem::path& path, std::uintmax_t max_bytes) {
     // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below.
@@ -142,6 +191,7 @@ std::vector<std::uint8_t> read_file(const std::filesystem::path& path, std::uint
     if (size > max_bytes)
         throw FileError(path, "is " + mebibytes(size) + ", more than the " + mebibytes(max_bytes) +
                                   " this program reads");
+    remember_input(info, path);
     std::vector<std::uint8_t> bytes;
     try {
         bytes.resize(static_cast<std::size_t>(size));
@@ -196,6 +246,23 @@ void check_output(const std::filesystem::path& path) {
     // Root may write anything, so ask the permission bits rather than access().
     if ((info.st_mode & S_IWUSR) == 0)
         throw FileError(path, "is read-only; refusing to replace it");
+    const std::filesystem::path input = read_as_input(target);
+    if (!input.empty())
+        throw FileError(path, "is a file this run read as an input (" + input.string() +
+                                  "); refusing to replace it");
+}
+
+void OutputFiles::claim(const std::filesystem::path& path) {
+    for (const std::filesystem::path& earlier : claimed_)
+        if (same_file(earlier, path))
+            throw FileError(path, "is the same file as the output " + earlier.string() +
+                                      "; refusing to write one over the other");
+    claimed_.push_back(path);
+}
+
+void OutputFiles::check(const std::filesystem::path& path) {
+    check_output(path);
+    claim(path);
 }
 
 OutputFiles::~OutputFiles() {
@@ -204,6 +271,12 @@ OutputFiles::~OutputFiles() {
 
 void OutputFiles::stage(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
     check_output(path);
+    for (const Staged& s : staged_)
+        if (same_file(s.requested, path))
+            throw FileError(path, "is the same file as the output " + s.requested.string() +
+                                      "; refusing to write one over the other");
+    // A path check() claimed is this output itself; any other is claimed now.
+    if (std::find(claimed_.begin(), claimed_.end(), path) == claimed_.end()) claim(path);
     Staged s{path, resolve_output(path), {}};
     // Keep an existing file's permission bits; a new file gets 0666 less the umask.
     mode_t mode = 0666;

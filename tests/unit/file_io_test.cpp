@@ -167,6 +167,7 @@ TEST(FileIo, OutputSetsAreAllOrNothing) {
         EXPECT_THROW(out.stage(dir.path() / "absent" / "second.tga", bytes), rl::FileError);
     }
     EXPECT_EQ(rl::read_file(first), (std::vector<std::uint8_t>{'o', 'l', 'd'}));
+    rl::forget_inputs();  // read back to check it, not an input of what follows
     rl::OutputFiles both;
     both.stage(first, bytes);
     both.stage(second, bytes);
@@ -174,6 +175,66 @@ TEST(FileIo, OutputSetsAreAllOrNothing) {
     EXPECT_EQ(rl::read_file(first), bytes);
     EXPECT_EQ(rl::read_file(second), bytes);
     EXPECT_EQ(entries(dir.path()), 2u);
+}
+
+// No output may replace a file the run has read, by its own name, a
+// symbolic link or a hard link (issue 17: 07_normal_mapping -o
+// d/crate_diffuse.tga replaced the model's own texture with the render).
+TEST(FileIo, AnOutputCannotReplaceAFileTheRunRead) {
+    rl_test::TempDir dir;
+    const auto input = dir.path() / "texture.tga", link = dir.path() / "link.tga",
+               hard = dir.path() / "hard.tga", other = dir.path() / "other.tga";
+    rl_test::write_text(input, "texels");
+    rl_test::write_text(other, "other");
+    std::filesystem::create_symlink(input, link);
+    std::filesystem::create_hard_link(input, hard);
+    rl::forget_inputs();
+    rl::check_output(input);  // not read yet: writable
+    rl::read_file(input);
+    for (const auto& path : {input, link, hard}) {
+        try {
+            rl::check_output(path);
+            ADD_FAILURE() << path << " was accepted";
+        } catch (const rl::FileError& e) {
+            EXPECT_NE(std::string(e.what()).find("is a file this run read as an input"),
+                      std::string::npos)
+                << e.what();
+        }
+        rl::OutputFiles out;
+        EXPECT_THROW(out.stage(path, std::vector<std::uint8_t>{1}), rl::FileError);
+    }
+    rl::check_output(other);  // a file not read stays writable
+    EXPECT_EQ(rl::read_file(input), (std::vector<std::uint8_t>{'t', 'e', 'x', 'e', 'l', 's'}));
+    rl::forget_inputs();
+}
+
+// Two outputs of one run naming one file, by the same name, another
+// spelling, or a link, are refused before any work (issue 17: 03_zbuffer -o
+// z.tga --depth-out z.tga succeeded and lost one image).
+TEST(FileIo, TwoOutputsCannotNameTheSameFile) {
+    rl_test::TempDir dir;
+    const auto a = dir.path() / "a.tga", existing = dir.path() / "existing.tga",
+               link = dir.path() / "link.tga";
+    rl_test::write_text(existing, "old");
+    std::filesystem::create_symlink(existing, link);
+    for (const auto& [first, second] :
+         {std::pair{a, a}, std::pair{a, dir.path() / "." / "a.tga"}, std::pair{existing, link}}) {
+        rl::OutputFiles out;
+        out.check(first);
+        EXPECT_THROW(out.check(second), rl::FileError) << first << " and " << second;
+    }
+    rl::OutputFiles staged;  // staged without checking first: refused at the second stage
+    staged.stage(existing, std::vector<std::uint8_t>{1});
+    EXPECT_THROW(staged.stage(link, std::vector<std::uint8_t>{2}), rl::FileError);
+    rl::OutputFiles two;  // distinct files are fine, each checked and then staged
+    two.check(a);
+    two.check(existing);
+    two.stage(a, std::vector<std::uint8_t>{1});
+    two.stage(existing, std::vector<std::uint8_t>{2});
+    two.commit();
+    rl::forget_inputs();
+    EXPECT_EQ(rl::read_file(existing), (std::vector<std::uint8_t>{2}));
+    rl::forget_inputs();
 }
 
 TEST(FileIoDeathTest, AKilledWriteLeavesNoTemporary) {

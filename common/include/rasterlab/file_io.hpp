@@ -37,7 +37,9 @@ class FileError : public std::runtime_error {
 inline constexpr std::uintmax_t kMaxInputBytes = std::uintmax_t{256} << 20;
 
 // Reads a regular file whole. Refuses directories, devices, FIFOs and files
-// larger than `max_bytes`, naming the file and the cap.
+// larger than `max_bytes`, naming the file and the cap. Every file read is
+// remembered (by device and inode) for the rest of the run, so that no
+// output can replace it: see check_output().
 std::vector<std::uint8_t> read_file(const std::filesystem::path& path,
                                     std::uintmax_t max_bytes = kMaxInputBytes);
 
@@ -46,8 +48,22 @@ std::vector<std::uint8_t> read_file(const std::filesystem::path& path,
 std::filesystem::path resolve_output(const std::filesystem::path& path);
 
 // Throws FileError unless `path` can be written without harm: its folder
-// exists and is writable, and it is absent or a writable regular file.
+// exists and is writable, and it is absent or a writable regular file that
+// this run has not read (a model's texture, say), through any symbolic or
+// hard link.
 void check_output(const std::filesystem::path& path);
+
+// The path by which this run read the file at `path` (the same device and
+// inode, through symbolic links), or empty if it read no such file.
+std::filesystem::path read_as_input(const std::filesystem::path& path);
+
+// Forgets the files read so far: for a test that reads back what it wrote
+// and then writes it again, as no program does.
+void forget_inputs();
+
+// Whether two paths name one file: the same device and inode when it
+// exists, the same absolute path (through symbolic links) when it does not yet.
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b);
 
 // A set of outputs written all or nothing. stage() writes a temporary beside
 // each target; commit() renames them all over their targets; the destructor
@@ -59,7 +75,10 @@ class OutputFiles {
     OutputFiles& operator=(const OutputFiles&) = delete;
     ~OutputFiles();
 
-    void check(const std::filesystem::path& path) { check_output(path); }
+    // check_output(), and refuses a path that names the same file as one
+    // checked before (-o z.tga --depth-out z.tga would lose one); stage()
+    // refuses one that names the same file as another staged.
+    void check(const std::filesystem::path& path);
     void stage(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
     void commit();
 
@@ -67,7 +86,9 @@ class OutputFiles {
     struct Staged {
         std::filesystem::path requested, target, temporary;
     };
+    void claim(const std::filesystem::path& path);
     std::vector<Staged> staged_;
+    std::vector<std::filesystem::path> claimed_;  // every path checked or staged
 };
 
 // One output written alone, all or nothing.

@@ -33,7 +33,10 @@ void check_image_output(const std::filesystem::path& path);
 //   out.stage(a, image_a); out.stage(b, image_b); out.commit();
 class ImageOutputs {
   public:
-    void check(const std::filesystem::path& path) { check_image_output(path); }
+    void check(const std::filesystem::path& path) {
+        check_image_output(path);
+        files_.check(path);  // and not the same file as another output
+    }
     void stage(const std::filesystem::path& path, const Image& image, bool keep_alpha = false) {
         files_.stage(path, encode_image(path, image, keep_alpha));
     }
