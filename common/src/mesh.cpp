@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <map>
 #include <new>
+#include <set>
 #include <sstream>
 
 #include "obj_validation.hpp"
@@ -42,8 +43,18 @@ struct Parsed {
     bool ok = false;
 };
 
+// How many materials an MTL text defines: its `newmtl` lines.
+std::size_t count_materials(std::string_view text) {
+    std::size_t count = 0;
+    for (std::size_t at = text.find("newmtl"); at != std::string_view::npos;
+         at = text.find("newmtl", at + 6))
+        count += at == 0 || text[at - 1] == '\n' || text[at - 1] == ' ' || text[at - 1] == '\t';
+    return count;
+}
+
 // Reads the MTL files an OBJ names as every other input is read: regular
-// files only, under a size cap. A missing or refused MTL is a warning, as
+// files only, each once, within kMaxMtlBytes and kMaxMaterials for all of
+// them together. A missing, refused or skipped MTL is a warning, as
 // tinyobjloader's own reader makes it.
 class BoundedMaterialReader : public tinyobj::MaterialReader {
   public:
@@ -51,21 +62,38 @@ class BoundedMaterialReader : public tinyobj::MaterialReader {
     bool operator()(const std::string& file, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warning,
                     std::string*) override {
+        const std::filesystem::path path = folder_ / file;
+        std::error_code ec;
+        const std::filesystem::path key = std::filesystem::weakly_canonical(path, ec);
+        if (!read_.insert(ec ? path : key).second) return true;  // read already: nothing new
         try {
-            const std::vector<std::uint8_t> bytes = read_file(folder_ / file, kMaxMtlBytes);
-            std::istringstream in(std::string(bytes.begin(), bytes.end()));
+            const std::vector<std::uint8_t> bytes = read_file(path, kMaxMtlBytes - bytes_);
+            bytes_ += bytes.size();
+            const std::string text(bytes.begin(), bytes.end());
+            const std::size_t count = count_materials(text);
+            if (materials->size() + count > kMaxMaterials) {
+                *warning += "material file " + path.string() + ": defines " +
+                            std::to_string(count) + " materials, past the " +
+                            std::to_string(kMaxMaterials) +
+                            " a model's MTL files may hold together; skipped\n";
+                return false;
+            }
+            std::istringstream in(text);
             std::string mtl_warning;
             tinyobj::LoadMtl(names, materials, &in, &mtl_warning, nullptr);
             *warning += mtl_warning;
             return true;
         } catch (const FileError& e) {
-            *warning += std::string("material file ") + e.what() + "\n";
+            *warning += std::string("material file ") + e.what() +
+                        (bytes_ > 0 ? " (with the model's other MTL files)" : "") + "\n";
             return false;
         }
     }
 
   private:
     std::filesystem::path folder_;
+    std::set<std::filesystem::path> read_;
+    std::uintmax_t bytes_ = 0;  // read so far, of kMaxMtlBytes
 };
 
 // Material text given directly (for tests): every mtllib reads it.

@@ -7,6 +7,7 @@
 #include <cstdlib>
 
 #include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
 #include "rasterlab/mesh.hpp"
 #include "rasterlab/texture_files.hpp"
 #include "temp_dir.hpp"
@@ -212,6 +213,49 @@ TEST(Mesh, DevicesAsMaterialFilesAreWarnedAbout) {
     EXPECT_EQ(rl::load_obj(dir.path() / "m.obj", &warnings).faces.size(), 1u);
     ASSERT_FALSE(warnings.empty());
     EXPECT_NE(warnings[0].find("not a regular file"), std::string::npos) << warnings[0];
+}
+
+// Each MTL file is read once however many mtllib lines name it, and all of
+// a model's MTL files together define at most kMaxMaterials (issue 17: a
+// 74-byte OBJ naming a 16 MiB MTL of bare newmtl lines took 3.85 GB and
+// 14 s, and each further mtllib of it as much again).
+TEST(Mesh, MaterialFilesAreReadOnceAndBoundedTogether) {
+    rl_test::TempDir dir;
+    rl_test::write_text(dir.path() / "one.mtl", "newmtl red\nKd 1 0 0\n");
+    std::string many;
+    for (std::size_t i = 0; i <= rl::kMaxMaterials; ++i)
+        many += "newmtl m" + std::to_string(i) + "\n";
+    rl_test::write_text(dir.path() / "many.mtl", many);
+    std::string obj;
+    for (int i = 0; i < 1000; ++i) obj += "mtllib one.mtl\n";
+    obj += "mtllib many.mtl\nmtllib many.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl red\nf 1 2 3\n";
+    rl_test::write_text(dir.path() / "m.obj", obj);
+    std::vector<std::string> warnings;
+    const Mesh mesh = rl::load_obj(dir.path() / "m.obj", &warnings);
+    EXPECT_EQ(mesh.materials.size(), 1u);  // one.mtl once; many.mtl skipped
+    std::size_t skipped = 0;
+    for (const std::string& w : warnings)
+        skipped += w.find("materials, past the 4096") != std::string::npos;
+    EXPECT_EQ(skipped, 1u);  // many.mtl is read (and skipped) once too
+}
+
+// 50 000 mtllib lines naming a missing file printed 100 001 warnings (issue
+// 17): each distinct warning is printed once with its count, and after ten
+// distinct ones the rest are counted.
+TEST(Warnings, RepeatedOnesArePrintedOnceAndTheRestCounted) {
+    std::vector<std::string> warnings(50000, "m.obj: material file x.mtl: cannot open");
+    for (int i = 0; i < 30; ++i) warnings.push_back(std::to_string(i) + ": another warning");
+    std::ostringstream captured;
+    std::streambuf* const old = std::cerr.rdbuf(captured.rdbuf());
+    rl::print_warnings("prog", warnings);
+    std::cerr.rdbuf(old);
+    const std::string text = captured.str();
+    EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 11) << text;
+    EXPECT_NE(text.find("prog: warning: m.obj: material file x.mtl: cannot open (50000 times)\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("prog: warning: and 21 more warnings like these\n"), std::string::npos)
+        << text;
 }
 
 TEST(Mesh, UnreadableFileIsNamed) {

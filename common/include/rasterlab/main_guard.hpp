@@ -6,6 +6,8 @@
 #include <iostream>
 #include <new>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace rl {
@@ -29,8 +31,32 @@ inline int guarded_main(const char* program, const std::function<int()>& body, i
     }
 }
 
-inline void print_warnings(const char* program, const std::vector<std::string>& warnings) {
-    for (const std::string& w : warnings) std::cerr << program << ": warning: " << w << '\n';
+// The warnings, "<program>: warning: <text>", each distinct text once (with
+// how many times it came, if more than once) and at most `shown` of them,
+// then how many more there were: 50 000 `mtllib` lines naming a missing file
+// would otherwise print 50 000 lines.
+inline void print_warnings(const char* program, const std::vector<std::string>& warnings,
+                           std::size_t shown = 10) {
+    std::vector<std::pair<std::string, std::size_t>> distinct;  // in the order they first came
+    std::unordered_map<std::string, std::size_t> index;
+    for (const std::string& w : warnings) {
+        const auto [at, added] = index.emplace(w, distinct.size());
+        if (added) distinct.push_back({w, 0});
+        ++distinct[at->second].second;
+    }
+    std::size_t hidden = 0;
+    for (std::size_t i = 0; i < distinct.size(); ++i) {
+        const auto& [text, times] = distinct[i];
+        if (i >= shown) {
+            hidden += times;
+            continue;
+        }
+        std::cerr << program << ": warning: " << text;
+        if (times > 1) std::cerr << " (" << times << " times)";
+        std::cerr << '\n';
+    }
+    if (hidden > 0)
+        std::cerr << program << ": warning: and " << hidden << " more warnings like these\n";
 }
 
 }  // namespace rl

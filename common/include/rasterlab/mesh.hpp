@@ -61,8 +61,13 @@ std::uintmax_t max_obj_bytes();
 // 10^5 took 23 s).
 inline constexpr std::size_t kMaxFaceVertices = 4096;
 
-// The largest MTL file read: 16 MiB (an MTL holds a few lines per material).
+// The most MTL text one model's files may hold together: 16 MiB (an MTL
+// holds a few lines per material), and the most materials they may define:
+// 4096 (each takes about 2 KB parsed; a 16 MiB MTL of bare `newmtl` lines
+// once took 3.85 GB). Each MTL file is read once however many `mtllib`
+// lines name it; files past either bound are skipped with a warning.
 inline constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t{16} << 20;
+inline constexpr std::size_t kMaxMaterials = 4096;
 
 // Loads an OBJ and its MTL files. Throws MeshError naming the file and the
 // problem (with tinyobjloader's own message) for an unreadable or malformed
