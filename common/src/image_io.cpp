@@ -29,6 +29,32 @@ bool is_png_jpeg_or_bmp(std::span<const std::uint8_t> bytes) {
            starts_with({0xff, 0xd8, 0xff}) || starts_with({'B', 'M'});
 }
 
+std::uint32_t little_endian(std::span<const std::uint8_t> bytes, std::size_t at, int size) {
+    std::uint32_t v = 0;
+    for (int i = size - 1; i >= 0; --i) v = (v << 8) | bytes[at + static_cast<std::size_t>(i)];
+    return v;
+}
+
+// The fewest bytes a file of this format can hold a width x height image in,
+// so that a header claiming 16384 x 16384 on a file of a few hundred bytes is
+// refused before the decoder allocates the gigabyte it claims (a 54-byte BMP
+// became a black 2.39 GB texture; a 649-byte JPEG took 397 MB before its
+// decoder gave up). BMP: its rows, exactly (stb_image reads no compressed
+// BMP). PNG: deflate expands at most 1032 times. JPEG: every 8 x 8 block of
+// luma costs at least one bit.
+std::uint64_t fewest_bytes(std::span<const std::uint8_t> bytes, int width, int height,
+                           int channels) {
+    const auto w = static_cast<std::uint64_t>(width), h = static_cast<std::uint64_t>(height);
+    if (bytes[0] == 'B') {  // BMP: stb_info has read its 54-byte headers
+        if (bytes.size() < 34) return 54;
+        const std::uint64_t offset = little_endian(bytes, 10, 4);
+        const std::uint32_t bits = little_endian(bytes, 28, 2);
+        return offset + (w * bits + 31) / 32 * 4 * h;
+    }
+    if (bytes[0] == 0x89) return h * (1 + w * static_cast<std::uint64_t>(channels)) / 1032;  // PNG
+    return (w + 7) / 8 * ((h + 7) / 8) / 8;                                                  // JPEG
+}
+
 Image load_with_stb(const std::filesystem::path& path) {
     const std::vector<std::uint8_t> bytes = read_file(path);
     if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw FileError(path, "file too large");
@@ -46,6 +72,12 @@ Image load_with_stb(const std::filesystem::path& path) {
     } catch (const std::invalid_argument& e) {
         throw FileError(path, e.what());
     }
+    const std::uint64_t fewest = fewest_bytes(bytes, width, height, channels);
+    if (bytes.size() < fewest)
+        throw FileError(path, "truncated pixel data: a " + std::to_string(width) + "x" +
+                                  std::to_string(height) + " image in this format needs at least " +
+                                  std::to_string(fewest) + " bytes, the file has " +
+                                  std::to_string(bytes.size()));
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                               &channels, 4),
