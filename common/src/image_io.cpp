@@ -142,8 +142,9 @@ std::vector<std::uint8_t> encode_image(const std::filesystem::path& path, const 
 }
 
 void check_image_output(const std::filesystem::path& path) {
-    check_extension(path);
+    // The path first: -o somedir is "a directory", not "unknown extension ''".
     check_output(path);
+    check_extension(path);
 }
 
 void save_image(const std::filesystem::path& path, const Image& image, bool keep_alpha) {

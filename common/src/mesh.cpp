@@ -8,6 +8,7 @@
 #include <new>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "obj_validation.hpp"
 
@@ -205,23 +206,36 @@ Mesh convert(const Parsed& parsed, const std::string& name,
 }  // namespace
 
 std::uintmax_t max_obj_bytes() {
-    if (const char* text = std::getenv("RASTERLAB_MAX_OBJ_MB")) {
-        char* end = nullptr;
-        const unsigned long long mib = std::strtoull(text, &end, 10);
-        if (end != text && *end == '\0' && mib > 0 && mib <= (1ull << 20)) return mib << 20;
-    }
-    return kDefaultMaxObjBytes;
+    const char* text = std::getenv("RASTERLAB_MAX_OBJ_MB");
+    if (!text) return kDefaultMaxObjBytes;
+    const std::string value = text;
+    // Digits only: strtoull would take " 5", "+5" or "-5" (as a huge number).
+    const bool digits = !value.empty() && value.size() <= 7 &&
+                        value.find_first_not_of("0123456789") == std::string::npos;
+    const unsigned long long mib = digits ? std::strtoull(text, nullptr, 10) : 0;
+    if (mib < 1 || mib > (1ull << 20))
+        throw std::invalid_argument("RASTERLAB_MAX_OBJ_MB='" + value +
+                                    "': need a whole number of MiB from 1 to 1048576");
+    return mib << 20;
 }
 
 Mesh load_obj(const std::filesystem::path& path, std::vector<std::string>* warnings) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw MeshError(path, "no such file");
+    const std::uintmax_t cap = max_obj_bytes();
+    // Over the cap: say how to raise it (and only then: a folder or a device
+    // is not helped by a larger cap).
+    if (std::filesystem::is_regular_file(path, ec) && std::filesystem::file_size(path, ec) > cap &&
+        !ec)
+        throw MeshError(path, "is " + std::to_string(std::filesystem::file_size(path, ec) >> 20) +
+                                  " MiB, more than the " + std::to_string(cap >> 20) +
+                                  " MiB this program reads (set RASTERLAB_MAX_OBJ_MB to raise the "
+                                  "cap)");
     std::vector<std::uint8_t> bytes;
     try {
-        bytes = read_file(path, max_obj_bytes());
+        bytes = read_file(path, cap);
     } catch (const FileError& e) {
-        throw MeshError(path, std::string(e.what()).substr(path.string().size() + 2) +
-                                  " (set RASTERLAB_MAX_OBJ_MB to raise the cap)");
+        throw MeshError(path, std::string(e.what()).substr(path.string().size() + 2));
     }
     const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     BoundedMaterialReader materials(path.parent_path());

@@ -1,5 +1,8 @@
 #include "view_options.hpp"
 
+#include <sstream>
+#include <stdexcept>
+
 namespace perspective {
 
 namespace {
@@ -22,7 +25,19 @@ Camera resolve_camera(const ViewOptions& view, const Box& box, float aspect) {
     fit_depth_range(camera, box);  // the defaults: just around the scene
     if (view.near_given) camera.near = view.camera.near;
     if (view.far_given) camera.far = view.camera.far;
-    check(camera);
+    const bool derived =
+        view.eye.empty() || view.target.empty() || !view.near_given || !view.far_given;
+    try {
+        check(camera);
+    } catch (const std::invalid_argument& e) {
+        if (!derived || box.empty()) throw;
+        // The user gave only part of this camera: say where the rest came from.
+        std::ostringstream out;
+        out << "the camera framed to fit the models (their box spans " << box.min << " to "
+            << box.max << ", seen with --fov " << camera.fov_y << ") does not work: " << e.what()
+            << "; give the camera yourself (--eye, --target, --near, --far)";
+        throw std::invalid_argument(out.str());
+    }
     return camera;
 }
 // [/doc:resolve-camera]
