@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "rasterlab/transform.hpp"
@@ -15,6 +16,16 @@ void check(const Camera& camera) {
     if (!(camera.near > 0))
         throw std::invalid_argument("--near: the near plane must be in front of the eye (> 0)");
     if (!(camera.near < camera.far)) throw std::invalid_argument("--near/--far: need near < far");
+    if (const double ratio = static_cast<double>(camera.near) / camera.far;
+        ratio < kSmallestNearOverFar) {
+        char text[220];
+        std::snprintf(text, sizeof text,
+                      "--near/--far: near / far is %.2g, below 1e-7: a float depth buffer rounds "
+                      "the depth of nearly every point to the clear value and draws almost "
+                      "nothing; raise --near or lower --far",
+                      ratio);
+        throw std::invalid_argument(text);
+    }
     if (!rl::look_at(camera.eye, camera.target, camera.up))
         throw std::invalid_argument(
             "--eye/--target/--up: the eye must differ from the target, and up must not be "
@@ -29,6 +40,18 @@ void check(const Camera& camera) {
                     "--eye/--near/--far: the camera's matrices overflow a float (near * far "
                     "or the eye's distance from the origin is beyond about 1e38); scale the "
                     "scene down");
+}
+
+std::string depth_precision_warning(const Camera& camera) {
+    const double ratio = static_cast<double>(camera.near) / camera.far;
+    if (ratio >= kWarnedNearOverFar) return {};
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "--near/--far: near / far is %.2g, below 1e-5: depths near the far plane round "
+                  "to the clear value and some pixels are lost (1%% or more below 1e-6); raise "
+                  "--near or lower --far",
+                  ratio);
+    return text;
 }
 
 rl::mat4 view_projection(const Camera& camera, float aspect) {

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const perspective::Camera camera =
             perspective::resolve_camera(view, perspective::scene_bounds(models), aspect);
+        rl::print_warnings("05_perspective", {perspective::depth_precision_warning(camera)});
 
         perspective::ColourTarget frame = perspective::colour_target(width, height);
         const perspective::PipelineCounts counts =

@@ -60,6 +60,7 @@ int main(int argc, char** argv) {
         }();
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+        rl::print_warnings("06_shading", {perspective::depth_precision_warning(camera)});
         perspective::ColourTarget frame = perspective::colour_target(width, height);
         const perspective::PipelineCounts counts = shading::render(models, camera, options, frame);
         rl::save_image(output, frame.colour());

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
             box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+        rl::print_warnings("07_normal_mapping", {perspective::depth_precision_warning(camera)});
 
         if (options.filter == textures::Filter::trilinear) normal_mapping::build_mip_levels(models);
         // [doc:lesson07-main]

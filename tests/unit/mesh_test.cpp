@@ -173,7 +173,7 @@ TEST(Mesh, FacesBeyondTheVertexCapAreRefusedQuickly) {
             text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
         }
         text += "f";
-        for (std::size_t i = 1; i <= n; ++i) text += " " + std::to_string(i);
+        for (std::size_t i = 1; i <= n; ++i) text += ' ', text += std::to_string(i);
         return text + "\n";
     };
     EXPECT_EQ(rl::parse_obj(polygon(rl::kMaxFaceVertices), "", "cap.obj").faces.size(),
@@ -224,7 +224,7 @@ TEST(Mesh, MaterialFilesAreReadOnceAndBoundedTogether) {
     rl_test::write_text(dir.path() / "one.mtl", "newmtl red\nKd 1 0 0\n");
     std::string many;
     for (std::size_t i = 0; i <= rl::kMaxMaterials; ++i)
-        many += "newmtl m" + std::to_string(i) + "\n";
+        many += "newmtl m", many += std::to_string(i), many += '\n';
     rl_test::write_text(dir.path() / "many.mtl", many);
     std::string obj;
     for (int i = 0; i < 1000; ++i) obj += "mtllib one.mtl\n";

@@ -40,6 +40,7 @@ inline void print_warnings(const char* program, const std::vector<std::string>& 
     std::vector<std::pair<std::string, std::size_t>> distinct;  // in the order they first came
     std::unordered_map<std::string, std::size_t> index;
     for (const std::string& w : warnings) {
+        if (w.empty()) continue;  // (a check that found nothing to warn about)
         const auto [at, added] = index.emplace(w, distinct.size());
         if (added) distinct.push_back({w, 0});
         ++distinct[at->second].second;
