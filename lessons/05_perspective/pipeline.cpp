@@ -1,5 +1,7 @@
 #include "pipeline.hpp"
 
+#include <cstdio>
+
 namespace perspective {
 
 PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
@@ -10,8 +12,19 @@ PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
     clipped += o.clipped;
     drawn += o.drawn;
     refused += o.refused;
+    covered += o.covered;
     fragments += o.fragments;
     return *this;
+}
+
+void throw_overdraw(double most) {
+    char text[240];
+    std::snprintf(text, sizeof text,
+                  "the triangles cover more than %.3g samples, 1000 times the image's: refusing "
+                  "to spend minutes on them (a scene covers its image a few times over; this many "
+                  "layers are the same faces repeated, or faces far larger than the view)",
+                  most);
+    throw OverdrawError(text);
 }
 
 // [doc:outside-frustum]

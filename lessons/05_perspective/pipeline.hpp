@@ -32,10 +32,12 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <tuple>
 #include <type_traits>
 #include <utility>
@@ -70,6 +72,16 @@ struct PipelineOptions {
     bool cull_back_faces = true;
     triangles::RasterMethod raster = triangles::RasterMethod::edge;  // lesson 02's three
     std::optional<triangles::PixelRect> tile;  // draw only these pixels (default: all)
+    // The most samples one draw may cover, in whole targets: 1000 times every
+    // sample. Each covered sample costs a depth test, so without a bound one
+    // screen-filling triangle repeated 100 000 times (a 1.4 MB OBJ) took 119 s;
+    // a real scene covers its image a few times over. 0: no bound.
+    double max_overdraw = 1000;
+};
+
+// What draw() throws when a draw covers more than max_overdraw targets.
+struct OverdrawError : std::runtime_error {
+    using std::runtime_error::runtime_error;
 };
 
 // What became of the work: every count the lab reports. Counts of separate
@@ -82,6 +94,7 @@ struct PipelineCounts {
     std::size_t clipped = 0;         // cut by at least one plane
     std::size_t drawn = 0;           // triangles rasterized (a clipped face may give several)
     std::size_t refused = 0;         // refused by the rasterizer (beyond 2^22 pixels, NaN)
+    std::size_t covered = 0;         // samples inside a triangle, before the depth test
     std::size_t fragments = 0;       // samples that passed the depth test and were stored
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
@@ -255,6 +268,9 @@ Fragment<V, F> fragment_at(const TriangleSetup<V, F>& t, int x, int y, float z, 
     return {x, y, z, scaled(over_w, 1 / inverse_w), inverse_w, &t};
 }
 
+// Throws OverdrawError for a draw that covered more than `most` samples.
+[[noreturn]] void throw_overdraw(double most);
+
 // Back-face test in clip space, before the divide: the sign of det[x y w]
 // is the sign of the volume of the tetrahedron (eye, v0, v1, v2), so it says
 // which side of the face's plane the eye is on even when some w <= 0, where
@@ -309,7 +325,7 @@ void store(RenderTarget<Pixels...>& target, int column, int y, const Outputs& ou
 template <class P, Interpolable V, class F, class... Pixels>
 bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
                         RenderTarget<Pixels...>& target, const PipelineOptions& options,
-                        std::size_t& fragments) {
+                        PipelineCounts& counts) {
     constexpr bool has_colour = sizeof...(Pixels) > 0, discards = ProgramTraits<P>::may_discard;
     rl::FloatImage* const depth = target.depth();
     const zbuffer::DepthState& state = target.depth_state;
@@ -327,6 +343,7 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
         const rl::vec2 offset = sample_offset(samples, s);
         ok &= triangles::rasterize(
             options.raster, t.screen(offset), rect, [&](int x, int y, rl::vec3 b) {
+                ++counts.covered;
                 const int column = x * samples + s;
                 float z =
                     zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
@@ -347,7 +364,7 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
                         store(target, column, y, program.fragment(fragment));
                     }
                 }
-                ++fragments;
+                ++counts.fragments;
             });
     }
     return ok;
@@ -361,6 +378,9 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
                     const PipelineOptions& options = {}) {
     using V = typename P::Varyings;
     const ClipPlanes planes = clip_planes(options.clip, target.width(), target.height());
+    const double most_covered = options.max_overdraw > 0 ? options.max_overdraw * target.width() *
+                                                               target.height() * target.samples()
+                                                         : HUGE_VAL;
     PipelineCounts counts;
     for (int face = 0; face < geometry.face_count(); ++face) {
         ++counts.faces;
@@ -383,8 +403,9 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
                        polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
                        options.interpolation, target.width(), target.height());
             // 5.-8. Rasterize, depth test, fragment stage, store.
-            const bool ok = rasterize_triangle(t, program, target, options, counts.fragments);
+            const bool ok = rasterize_triangle(t, program, target, options, counts);
             ++(ok ? counts.drawn : counts.refused);
+            if (static_cast<double>(counts.covered) > most_covered) throw_overdraw(most_covered);
         }
     }
     return counts;

@@ -12,6 +12,8 @@ too big to keep in the repository:
                                     vertex (80 000 once took 11.6 s in the
                                     split tangents' slot search: their float
                                     weights were NaN, so no face joined a slot)
+  make_hostile_obj.py repeat N OUT  one triangle filling the view, N times
+                                    (100 000 once took 119 s of depth tests)
   make_hostile_obj.py rle_texture   huge_rle.obj/.mtl/.tga in the current folder:
                                     a triangle whose texture is a valid 16384^2
                                     RLE TGA of 10 MiB that decodes to 1 GiB
@@ -45,6 +47,12 @@ def fan(n, out):
         f.write("vt 0 0\nvt 1 0\nvt 0 1\n")
         for i in range(n):
             f.write("f 1/1 %d/2 %d/3\n" % (i + 2, i + 3))
+
+
+def repeat(n, out):
+    with open(out, "w") as f:
+        f.write("v -10 -10 0\nv 10 -10 0\nv 0 10 0\n")
+        f.write("f 1 2 3\n" * n)
 
 
 def face(n, out):
@@ -85,6 +93,8 @@ if __name__ == "__main__":
         face(int(sys.argv[2]), sys.argv[3])
     elif kind == "fan":
         fan(int(sys.argv[2]), sys.argv[3])
+    elif kind == "repeat":
+        repeat(int(sys.argv[2]), sys.argv[3])
     elif kind == "big":
         big(int(sys.argv[2]), sys.argv[3])
     elif kind == "rle_texture":

@@ -255,6 +255,27 @@ TEST(Pipeline, TileByTileEqualsOneDraw) {
     EXPECT_EQ(sum.faces, one.faces * tiles(300, 200, 64).size());
 }
 
+// A draw covering its target more than max_overdraw times over is refused
+// (issue 17: one screen-filling triangle repeated 100 000 times took 119 s);
+// one just under the bound is drawn.
+TEST(Pipeline, ADrawCoveringTheTargetMoreThanMaxOverdrawTimesIsRefused) {
+    const ClipTriangles one = covering_triangle();
+    const auto layers = [&](std::size_t n) {
+        ClipTriangles many;
+        many.faces.assign(n, one.faces[0]);
+        return many;
+    };
+    ColourTarget target = colour_target(16, 16);
+    PipelineOptions options;
+    options.max_overdraw = 10;
+    EXPECT_EQ(draw(layers(10), Constant{{1, 2, 3, 255}}, target, options).covered, 10u * 16 * 16);
+    EXPECT_THROW(draw(layers(11), Constant{{1, 2, 3, 255}}, target, options), OverdrawError);
+    options.max_overdraw = 0;  // no bound
+    EXPECT_EQ(draw(layers(2000), Constant{{1, 2, 3, 255}}, target, options).drawn, 2000u);
+    EXPECT_THROW(draw(layers(1001), Constant{{1, 2, 3, 255}}, target, {}),
+                 OverdrawError);  // default
+}
+
 struct Provoking {
     rl::mat4 vp;
     using Varyings = float;
