@@ -1,5 +1,7 @@
 #include "view_cli.hpp"
 
+#include <memory>
+
 namespace perspective {
 
 namespace {
@@ -14,7 +16,13 @@ CLI::Option* add_point_option(CLI::App& app, const std::string& flag, std::vecto
 
 void add_view_options(CLI::App& app, ViewOptions& view, const std::string& default_scene) {
     app.add_option("-m,--model", view.models,
-                   "OBJ file to draw, as stored (repeat for several); default: " + default_scene);
+                   "OBJ file to draw, as stored (repeat for several, at most " +
+                       std::to_string(kMaxModels) + "); default: " + default_scene)
+        ->each([count = std::make_shared<std::size_t>(0)](const std::string&) {
+            if (++*count > kMaxModels)
+                throw CLI::ValidationError("--model", "at most " + std::to_string(kMaxModels) +
+                                                          " models, each loaded whole");
+        });
     add_point_option(app, "--eye", view.eye, "Camera position (default: framing the scene)");
     add_point_option(app, "--target", view.target, "Point looked at (default: the scene's centre)");
     add_point_option(app, "--up", view.up, "Up direction")->capture_default_str();

@@ -10,11 +10,17 @@
 #pragma once
 
 #include <string>
+#include <cstddef>
 #include <vector>
 
 #include "camera.hpp"
 
 namespace perspective {
+
+// The most --model options a program takes: each copy is loaded whole (the
+// globe with its maps costs lesson 07 11.5 MB), so their number is bounded
+// like every other input.
+inline constexpr std::size_t kMaxModels = 64;
 
 struct ViewOptions {
     std::vector<std::string> models;              // empty: the lesson's default scene
