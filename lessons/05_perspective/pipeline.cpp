@@ -12,7 +12,7 @@ PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
     clipped += o.clipped;
     drawn += o.drawn;
     refused += o.refused;
-    covered += o.covered;
+    visited += o.visited;
     fragments += o.fragments;
     return *this;
 }
@@ -20,9 +20,9 @@ PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
 void throw_overdraw(double most) {
     char text[240];
     std::snprintf(text, sizeof text,
-                  "the triangles cover more than %.3g samples, 1000 times the image's: refusing "
-                  "to spend minutes on them (a scene covers its image a few times over; this many "
-                  "layers are the same faces repeated, or faces far larger than the view)",
+                  "the triangles' bounding boxes cover more than %.3g samples, 1000 times the "
+                  "image's: refusing to spend minutes on them (a scene's cover its image a few "
+                  "times over; this many are the same faces repeated, or long thin faces)",
                   most);
     throw OverdrawError(text);
 }

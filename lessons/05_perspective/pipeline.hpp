@@ -72,14 +72,16 @@ struct PipelineOptions {
     bool cull_back_faces = true;
     triangles::RasterMethod raster = triangles::RasterMethod::edge;  // lesson 02's three
     std::optional<triangles::PixelRect> tile;  // draw only these pixels (default: all)
-    // The most samples one draw may cover, in whole targets: 1000 times every
-    // sample. Each covered sample costs a depth test, so without a bound one
-    // screen-filling triangle repeated 100 000 times (a 1.4 MB OBJ) took 119 s;
-    // a real scene covers its image a few times over. 0: no bound.
+    // The most samples one draw may visit, in whole targets: 1000 times every
+    // sample. The rasterizer visits every sample of a triangle's bounding box
+    // within the target, so without a bound one screen-filling triangle
+    // repeated 100 000 times (a 1.4 MB OBJ) took 119 s, and a fan of 409 600
+    // thin triangles (2 MB) 35 s; a real scene's boxes cover its image a few
+    // times over. 0: no bound.
     double max_overdraw = 1000;
 };
 
-// What draw() throws when a draw covers more than max_overdraw targets.
+// What draw() throws when a draw visits more than max_overdraw targets.
 struct OverdrawError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
@@ -94,7 +96,7 @@ struct PipelineCounts {
     std::size_t clipped = 0;         // cut by at least one plane
     std::size_t drawn = 0;           // triangles rasterized (a clipped face may give several)
     std::size_t refused = 0;         // refused by the rasterizer (beyond 2^22 pixels, NaN)
-    std::size_t covered = 0;         // samples inside a triangle, before the depth test
+    std::size_t visited = 0;         // samples of the triangles' boxes the rasterizer tested
     std::size_t fragments = 0;       // samples that passed the depth test and were stored
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
@@ -268,8 +270,21 @@ Fragment<V, F> fragment_at(const TriangleSetup<V, F>& t, int x, int y, float z, 
     return {x, y, z, scaled(over_w, 1 / inverse_w), inverse_w, &t};
 }
 
-// Throws OverdrawError for a draw that covered more than `most` samples.
+// Throws OverdrawError for a draw that visited more than `most` samples.
 [[noreturn]] void throw_overdraw(double most);
+
+// The pixels of the triangle's bounding box within `rect`: what the
+// rasterizer visits (0 for a triangle it would refuse).
+inline std::size_t box_samples(const triangles::ScreenTriangle& t, const triangles::PixelRect& r) {
+    if (!triangles::within_raster_range(t)) return 0;
+    const auto [x0, x1] = std::minmax({t.v[0].x, t.v[1].x, t.v[2].x});
+    const auto [y0, y1] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
+    const triangles::PixelRange xs = triangles::centres_between(x0, x1, r.x0, r.x1),
+                                ys = triangles::centres_between(y0, y1, r.y0, r.y1);
+    if (xs.first > xs.last || ys.first > ys.last) return 0;
+    return static_cast<std::size_t>(xs.last - xs.first + 1) *
+           static_cast<std::size_t>(ys.last - ys.first + 1);
+}
 
 // Back-face test in clip space, before the divide: the sign of det[x y w]
 // is the sign of the volume of the tetrahedron (eye, v0, v1, v2), so it says
@@ -338,12 +353,12 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
         samples == 1
             ? std::nullopt
             : std::optional<triangles::PixelWeights>(std::in_place, options.raster, t.screen());
+    counts.visited += box_samples(t.screen(), rect) * static_cast<std::size_t>(samples);
     bool ok = true;
     for (int s = 0; s < samples; ++s) {
         const rl::vec2 offset = sample_offset(samples, s);
         ok &= triangles::rasterize(
             options.raster, t.screen(offset), rect, [&](int x, int y, rl::vec3 b) {
-                ++counts.covered;
                 const int column = x * samples + s;
                 float z =
                     zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
@@ -378,7 +393,7 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
                     const PipelineOptions& options = {}) {
     using V = typename P::Varyings;
     const ClipPlanes planes = clip_planes(options.clip, target.width(), target.height());
-    const double most_covered = options.max_overdraw > 0 ? options.max_overdraw * target.width() *
+    const double most_visited = options.max_overdraw > 0 ? options.max_overdraw * target.width() *
                                                                target.height() * target.samples()
                                                          : HUGE_VAL;
     PipelineCounts counts;
@@ -405,7 +420,7 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
             // 5.-8. Rasterize, depth test, fragment stage, store.
             const bool ok = rasterize_triangle(t, program, target, options, counts);
             ++(ok ? counts.drawn : counts.refused);
-            if (static_cast<double>(counts.covered) > most_covered) throw_overdraw(most_covered);
+            if (static_cast<double>(counts.visited) > most_visited) throw_overdraw(most_visited);
         }
     }
     return counts;

@@ -268,7 +268,7 @@ TEST(Pipeline, ADrawCoveringTheTargetMoreThanMaxOverdrawTimesIsRefused) {
     ColourTarget target = colour_target(16, 16);
     PipelineOptions options;
     options.max_overdraw = 10;
-    EXPECT_EQ(draw(layers(10), Constant{{1, 2, 3, 255}}, target, options).covered, 10u * 16 * 16);
+    EXPECT_EQ(draw(layers(10), Constant{{1, 2, 3, 255}}, target, options).visited, 10u * 16 * 16);
     EXPECT_THROW(draw(layers(11), Constant{{1, 2, 3, 255}}, target, options), OverdrawError);
     options.max_overdraw = 0;  // no bound
     EXPECT_EQ(draw(layers(2000), Constant{{1, 2, 3, 255}}, target, options).drawn, 2000u);
