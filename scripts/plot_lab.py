@@ -56,11 +56,11 @@ def format_cell(text):
     return f"{value:.3g}"
 
 
-def write_table(rows, columns, path, front_labels, label):
+def write_table(rows, columns, path, front_keys, key):
     lines = ["| " + " | ".join(columns) + " | best trade-off |",
              "|" + "---|" * (len(columns) + 1)]
     for row in rows:
-        mark = "yes" if row_key(row, label) in front_labels else ""
+        mark = "yes" if key(row) in front_keys else ""
         lines.append("| " + " | ".join(format_cell(row[c]) for c in columns) + f" | {mark} |")
     path.write_text("\n".join(lines) + "\n")
 
@@ -241,8 +241,13 @@ def main():
     for row in rows:
         groups.setdefault(row[options.group] if options.group else "", []).append(row)
 
+    # A row's identity for the best trade-offs: its group and its label. (By
+    # the label alone, a method best in one group was marked best in all.)
+    def key(row):
+        return (row[options.group] if options.group else "",) + row_key(row, label)
+
     figure, axes = plt.subplots(figsize=(8.5, 5))
-    front_labels = set()
+    front_keys = set()
     labels, all_points = [], []
     for index, (group, members) in enumerate(groups.items()):
         colour = f"C{index}"
@@ -254,7 +259,7 @@ def main():
                                         textcoords="offset points", xytext=(6, 4), fontsize=8))
             all_points.append((x, y))
         front = pareto_front(points)
-        front_labels.update(row_key(members[i], label) for i in front)
+        front_keys.update(key(members[i]) for i in front)
         axes.plot([points[i][0] for i in front], [points[i][1] for i in front], linestyle="--",
                   color=colour, linewidth=1, zorder=2)
         axes.scatter([points[i][0] for i in front], [points[i][1] for i in front], s=140,
@@ -267,7 +272,7 @@ def main():
 
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())
-        write_table(rows, columns, options.table, front_labels, label)
+        write_table(rows, columns, options.table, front_keys, key)
         print(f"wrote {options.table}")
 
 

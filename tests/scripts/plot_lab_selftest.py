@@ -1,0 +1,33 @@
+#!/usr/bin/env python3
+"""plot_lab.py marks the best trade-offs within each --group: a method that
+is the best trade-off in one group is not marked in another where a faster,
+more accurate point beats it (issue 18: the marks were keyed on the label
+alone, and "affine, 8x8 cells" was marked best at every tilt)."""
+import pathlib
+import subprocess
+import sys
+import tempfile
+
+plot = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "plot_lab.py"
+with tempfile.TemporaryDirectory() as folder:
+    folder = pathlib.Path(folder)
+    csv = folder / "lab.csv"
+    # Group "flat": fine is best (fastest and most accurate). Group "tilted":
+    # coarse beats fine on time and error, so fine is not a best trade-off there.
+    csv.write_text("tilt,method,ns,error\n"
+                   "flat,fine,10,1\n"
+                   "flat,coarse,30,5\n"
+                   "tilted,fine,30,5\n"
+                   "tilted,coarse,10,1\n")
+    table = folder / "lab.md"
+    subprocess.run([sys.executable, str(plot), str(csv), "--x", "ns", "--y", "error",
+                    "--label", "method", "--group", "tilt", "--svg", str(folder / "lab.svg"),
+                    "--table", str(table)], check=True)
+    marks = {tuple(cell.strip() for cell in line.strip("|").split("|")[:2]):
+             line.strip("|").split("|")[-1].strip()
+             for line in table.read_text().splitlines()[2:]}
+    expected = {("flat", "fine"): "yes", ("flat", "coarse"): "",
+                ("tilted", "fine"): "", ("tilted", "coarse"): "yes"}
+    if marks != expected:
+        sys.exit(f"best trade-offs {marks}, expected {expected}")
+print("best trade-offs marked within each group")
