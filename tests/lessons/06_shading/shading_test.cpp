@@ -192,6 +192,25 @@ TEST(ShadingTest, GrazingLightAndExtremeExponentsStayFinite) {
                 1e-6f);
 }
 
+// Where the reflected light points away from the eye (r . v < 0) there is
+// no highlight: the base of pow is clamped to 0 first. Unclamped, an even
+// exponent turns the negative base into a spurious highlight and a
+// fractional one into NaN (issue 18: dropping the clamp passed every test,
+// whose r . v was +7e-8 and whose exponents were integers).
+TEST(ShadingTest, NoHighlightWhereTheReflectionPointsAwayFromTheEye) {
+    for (float shininess : {32.0f, 32.5f, 2.0f}) {
+        Lighting<float> l;
+        l.lights.push_back({rl::normalize(rl::vec3{1, 0, 1}), {1, 1, 1}});
+        l.shininess = shininess;
+        l.ambient = {};
+        // n = +z, l = (1, 0, 1) / sqrt 2: r = (-1, 0, 1) / sqrt 2, and r . v = -0.71 for v = +x.
+        const Reflection<float> r = reflection(l, {0, 0, 1}, {1, 0, 0}, Specular::phong);
+        EXPECT_EQ(r.specular.x, 0.0f) << shininess;
+        EXPECT_TRUE(std::isfinite(r.diffuse.x)) << shininess;
+        EXPECT_NEAR(r.diffuse.x, std::sqrt(0.5f), 1e-6f);  // the diffuse light is all there is
+    }
+}
+
 // A direction is a direction: --light 1 1 1 and --light 3 3 3 light alike,
 // the fill light included (issue 17: its direction was built from the raw
 // vector, and the two differed by up to 40 levels).
