@@ -87,6 +87,11 @@ TEST(LookAt, PutsTheEyeAtTheOriginAndTheTargetDownMinusZ) {
     EXPECT_NEAR(t.z, -rl::length(target - eye), 1e-4f);
     // Up stays up: a point above the target lands at positive y.
     EXPECT_GT(apply(*view, target + vec3{0, 1, 0}).y, 0);
+    // And right stays right: the viewer's right, forward x up = (5, 0, -4) here, lands at +x
+    // and nowhere else (a view built from up x forward is mirrored: it passed the checks above).
+    const vec3 right = apply(*view, target + rl::normalize(vec3{5, 0, -4}));
+    EXPECT_NEAR(right.x, 1, 1e-4f);
+    EXPECT_NEAR(right.y, 0, 1e-4f);
 }
 
 TEST(LookAt, RefusesADegenerateCamera) {

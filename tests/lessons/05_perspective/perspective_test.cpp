@@ -356,6 +356,14 @@ TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
     EXPECT_EQ(counts.refused, 0u);
     EXPECT_GT(counts.clipped, 0u);
     EXPECT_GT(counts.fragments, 0u);
+    // From inside, every face of the globe is a back face: alone, it draws nothing.
+    const std::vector<TexturedModel> globe(models.end() - 1, models.end());
+    perspective::ColourTarget inside = perspective::colour_target(64, 64);
+    const PipelineCounts g = render(globe, camera, {}, inside);
+    EXPECT_EQ(g.back_faces, g.faces);
+    EXPECT_GT(g.faces, 0u);
+    EXPECT_EQ(g.fragments, 0u);
+    for (const rl::Rgba& p : inside.colour().pixels()) EXPECT_EQ(p, rl::kBackground);
 }
 
 // Models far from the origin: float positions there are coarse (1/128 at
