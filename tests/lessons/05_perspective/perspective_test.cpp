@@ -132,6 +132,21 @@ TEST(PerspectiveTest, NearOnlyClippingLosesTrianglesPastTheRasterizersRange) {
     EXPECT_EQ(guard.refused, 0u);
 }
 
+// The worked example of docs/05_perspective.md#perspective-correct-interpolation:
+// on an edge from w = 1 (attribute 0) to w = 3 (attribute 1), the screen
+// midpoint is the surface point a quarter of the way along, and the
+// pipeline's fragment there carries 1/4, where affine interpolation gives 1/2.
+TEST(PerspectiveTest, TheWorkedExampleOfThePageInterpolatesAQuarterOfTheWay) {
+    const ClipVertex<float> a{{-1, 0, 0, 1}, 0.0f}, b{{3, 0, 0, 3}, 1.0f}, c{{0, 1, 0, 1}, 0.0f};
+    for (Interpolation mode : {Interpolation::perspective_correct, Interpolation::affine}) {
+        const TriangleSetup<float> t = set_up(a, b, c, NoFlat{}, 0, mode, 100, 100);
+        // The screen midpoint of the edge a-b: x/w goes from -1 to 1, so NDC x = 0.
+        EXPECT_FLOAT_EQ((t.window[0].x + t.window[1].x) / 2, 50.0f);
+        const Fragment<float> f = fragment_at(t, 50, 50, 0.5f, rl::vec3{0.5f, 0.5f, 0});
+        EXPECT_NEAR(f.varyings, mode == Interpolation::affine ? 0.5f : 0.25f, 1e-6f);
+    }
+}
+
 // Pixels the ray cast covers that the pipeline leaves empty (holes, as a
 // crack along a shared edge), and pixels it covers that the ray cast leaves
 // empty.
