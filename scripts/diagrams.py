@@ -9,6 +9,10 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   03_painter_cycle.svg       three sticks, each over the next: no order works
   03_depth_mapping.svg       stored depth against view distance, per format
   04_mip_footprint.svg       a pixel's footprint in the texture and its mip level
+  05_perspective_edge.svg    along an edge from w = 1 to w = 3: screen position against
+                             surface position, and 1/w linear on the screen
+  06_reflection_vectors.svg  the vectors n, l, v, r and h at a lit point
+  06_srgb_curve.svg          sRGB bytes against linear light, bytes 128 and 188 marked
 """
 import math
 import pathlib
@@ -286,12 +290,94 @@ def mip_footprint(out):
     save(figure, out, "04_mip_footprint.svg")
 
 
+def perspective_edge(out):
+    # The edge of docs/05_perspective.md's worked example: from A (w = 1) to
+    # B (w = 3). A surface point at fraction t along it lies at screen fraction
+    # sigma = t w_B / ((1 - t) w_A + t w_B).
+    w_a, w_b = 1.0, 3.0
+    ts = [i / 200 for i in range(201)]
+    sigmas = [t * w_b / ((1 - t) * w_a + t * w_b) for t in ts]
+    figure, (left, right) = plt.subplots(1, 2, figsize=(9, 3.8))
+    left.plot(sigmas, ts, color=LINE, label="surface fraction t at screen fraction σ")
+    left.plot([0, 1], [0, 1], color="#888888", ls="--", label="what affine interpolation assumes")
+    left.plot([0.5], [0.25], "o", color=ACCENT)
+    left.annotate("screen midpoint σ = ½\nis the surface point t = ¼", (0.5, 0.25), (0.55, 0.08),
+                  arrowprops=dict(arrowstyle="->", color=ACCENT), color=ACCENT, fontsize=8)
+    left.set_xlabel("screen fraction σ along the edge")
+    left.set_ylabel("surface fraction t")
+    left.legend(fontsize=7, loc="upper left")
+    left.set_title("Equal screen steps are unequal surface steps", fontsize=9)
+    inverse_w = [1 / ((1 - t) * w_a + t * w_b) for t in ts]
+    right.plot(sigmas, inverse_w, color=LINE, label="1/w: a straight line in σ")
+    right.plot(sigmas, [(1 - t) * w_a + t * w_b for t in ts], color=ACCENT, label="w itself: not straight")
+    right.set_xlabel("screen fraction σ along the edge")
+    right.legend(fontsize=7, loc="upper left")
+    right.set_title("Why the pipeline interpolates 1/w and a/w", fontsize=9)
+    for axes in (left, right):
+        axes.grid(True, alpha=0.3)
+    save(figure, out, "05_perspective_edge.svg")
+
+
+def reflection_vectors(out):
+    figure, axes = plt.subplots(figsize=(6, 3.8))
+    axes.plot([-2.2, 2.2], [0, 0], color=INK, lw=1.5)
+    axes.add_patch(Rectangle((-2.2, -0.35), 4.4, 0.35, color=SOFT))
+    angle_l, angle_v = math.radians(35), math.radians(-60)  # from the normal, towards +x and -x
+    vectors = {"n": (0.0, 1.6), "l": (1.6 * math.sin(angle_l), 1.6 * math.cos(angle_l)),
+               "v": (1.6 * math.sin(angle_v), 1.6 * math.cos(angle_v))}
+    lx, ly = vectors["l"][0] / 1.6, vectors["l"][1] / 1.6
+    vectors["r"] = (1.6 * -lx, 1.6 * ly)  # l mirrored about n: r = 2 (n.l) n - l
+    hx, hy = lx + vectors["v"][0] / 1.6, ly + vectors["v"][1] / 1.6
+    norm = math.hypot(hx, hy)
+    vectors["h"] = (1.6 * hx / norm, 1.6 * hy / norm)  # halfway between l and v
+    colours = {"n": INK, "l": ACCENT, "v": LINE, "r": ACCENT, "h": "#208040"}
+    words = {"n": "n: the normal", "l": "l: towards the light", "v": "v: towards the eye",
+             "r": "r: l mirrored about n", "h": "h = (l + v) / |l + v|"}
+    for name, (x, y) in vectors.items():
+        axes.annotate("", (x, y), (0, 0), arrowprops=dict(arrowstyle="->", color=colours[name], lw=1.6,
+                                                         ls="--" if name in "rh" else "-"))
+        axes.text(x * 1.08, y * 1.08 + 0.05, words[name], color=colours[name], fontsize=8,
+                  ha="left" if x >= 0 else "right")
+    axes.text(0, -0.6, "Phong's highlight: (r · v)^s      Blinn-Phong's: (n · h)^s      diffuse: n · l",
+              ha="center", fontsize=8)
+    axes.set_xlim(-2.6, 2.6)
+    axes.set_ylim(-0.8, 2.0)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    save(figure, out, "06_reflection_vectors.svg")
+
+
+def srgb_to_linear(c):
+    return c / 12.92 if c <= 0.04045 else ((c + 0.055) / 1.055) ** 2.4
+
+
+def srgb_curve(out):
+    figure, axes = plt.subplots(figsize=(6, 4.2))
+    bytes_ = list(range(256))
+    axes.plot(bytes_, [srgb_to_linear(b / 255) for b in bytes_], color=LINE, label="linear light of an sRGB byte")
+    axes.plot([0, 255], [0, 1], color="#888888", ls="--", label="byte / 255: what lighting the bytes assumes")
+    half = srgb_to_linear(128 / 255)
+    axes.plot([128, 128, 0], [0, half, half], color=ACCENT, lw=0.8, ls=":")
+    axes.text(132, half - 0.06, f"byte 128 is {half:.3f} of full light,\nnot 0.5", color=ACCENT, fontsize=8)
+    byte_half = min(bytes_, key=lambda b: abs(srgb_to_linear(b / 255) - 0.5))
+    axes.plot([0, byte_half, byte_half], [0.5, 0.5, 0], color="#208040", lw=0.8, ls=":")
+    axes.text(byte_half + 4, 0.52, f"half the light is byte {byte_half}", color="#208040", fontsize=8)
+    axes.set_xlabel("stored byte")
+    axes.set_ylabel("linear light (0 to 1)")
+    axes.set_xlim(0, 255)
+    axes.set_ylim(0, 1)
+    axes.legend(fontsize=7, loc="upper left")
+    axes.grid(True, alpha=0.3)
+    axes.set_title("sRGB spends its bytes on the dark end", fontsize=9)
+    save(figure, out, "06_srgb_curve.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
-                 mip_footprint):
+                 mip_footprint, perspective_edge, reflection_vectors, srgb_curve):
         draw(out)
 
 
