@@ -11,6 +11,7 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   04_mip_footprint.svg       a pixel's footprint in the texture and its mip level
   05_perspective_edge.svg    along an edge from w = 1 to w = 3: screen position against
                              surface position, and 1/w linear on the screen
+  05_clip_fan.svg            a triangle crossing the near plane, cut to a quad and drawn as a fan
   06_reflection_vectors.svg  the vectors n, l, v, r and h at a lit point
   06_srgb_curve.svg          sRGB bytes against linear light, bytes 128 and 188 marked
 """
@@ -318,6 +319,41 @@ def perspective_edge(out):
     save(figure, out, "05_perspective_edge.svg")
 
 
+def clip_fan(out):
+    # Seen from above (x across, view depth down the page): a triangle with one
+    # corner behind the near plane, cut by Sutherland-Hodgman into a convex
+    # quad, then drawn as the fan (0, 1, 2), (0, 2, 3).
+    near = 0.6
+    a, b, c = (-1.4, 3.2), (1.8, 2.6), (0.4, -0.5)  # (x, distance in front of the eye)
+
+    def cut(p, q):  # where the edge p-q crosses distance = near
+        t = (p[1] - near) / (p[1] - q[1])
+        return (p[0] + (q[0] - p[0]) * t, near)
+
+    quad = [a, b, cut(b, c), cut(c, a)]
+    figure, axes = plt.subplots(figsize=(6.4, 4.4))
+    axes.add_patch(Polygon([a, b, c], closed=True, fill=False, ec="#999999", ls="--"))
+    axes.add_patch(Polygon(quad, closed=True, color=SOFT, ec=LINE, lw=1.5))
+    axes.plot([quad[0][0], quad[2][0]], [quad[0][1], quad[2][1]], color=LINE, lw=1, ls=":")
+    axes.plot([-2.4, 2.6], [near, near], color=ACCENT, lw=1.2)
+    axes.text(-2.4, near - 0.22, "near plane (z = −w in clip space)", color=ACCENT, fontsize=8)
+    axes.plot([-2.4, 2.6], [0, 0], color=INK, lw=0.6, ls="-.")
+    axes.text(-2.4, 0.08, "the eye's plane, w = 0", fontsize=8)
+    axes.plot([0], [0], "o", color=INK)
+    for name, point, dx in (("0", quad[0], -0.25), ("1", quad[1], 0.12), ("2", quad[2], 0.1),
+                            ("3", quad[3], -0.3)):
+        axes.text(point[0] + dx, point[1] + 0.1, name, color=LINE, fontsize=9)
+    axes.text(c[0] + 0.1, c[1] - 0.05, "behind the plane: cut away", color="#777777", fontsize=8)
+    axes.text(-0.2, 2.0, "fan: (0, 1, 2)\nand (0, 2, 3)", color=LINE, fontsize=8)
+    axes.set_xlim(-2.5, 2.7)
+    axes.set_ylim(-0.8, 3.6)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    axes.set_title("Clipping at the near plane, seen from above:\nthe triangle becomes a convex quad, drawn as a fan",
+                   fontsize=8)
+    save(figure, out, "05_clip_fan.svg")
+
+
 def reflection_vectors(out):
     figure, axes = plt.subplots(figsize=(6, 3.8))
     axes.plot([-2.2, 2.2], [0, 0], color=INK, lw=1.5)
@@ -377,7 +413,7 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
-                 mip_footprint, perspective_edge, reflection_vectors, srgb_curve):
+                 mip_footprint, clip_fan, perspective_edge, reflection_vectors, srgb_curve):
         draw(out)
 
 
