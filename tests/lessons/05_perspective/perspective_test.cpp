@@ -132,6 +132,24 @@ TEST(PerspectiveTest, NearOnlyClippingLosesTrianglesPastTheRasterizersRange) {
     EXPECT_EQ(guard.refused, 0u);
 }
 
+// The projection walk-through of docs/05_perspective.md: the eye-space point
+// (1, 0.5, -4) with a 60 degree field of view, aspect 1.5, near 1, far 10.
+TEST(PerspectiveTest, TheProjectionWalkThroughOfThePage) {
+    const rl::vec4 clip = rl::perspective(60, 1.5f, 1, 10) * rl::vec4{1, 0.5f, -4, 1};
+    EXPECT_NEAR(clip.x, 1.155f, 1e-3f);
+    EXPECT_NEAR(clip.y, 0.866f, 1e-3f);
+    EXPECT_NEAR(clip.z, 2.667f, 1e-3f);
+    EXPECT_NEAR(clip.w, 4.0f, 1e-6f);
+    const rl::vec3 ndc = clip.xyz() / clip.w;
+    EXPECT_NEAR(ndc.x, 0.289f, 1e-3f);
+    EXPECT_NEAR(ndc.y, 0.217f, 1e-3f);
+    EXPECT_NEAR(ndc.z, 0.667f, 1e-3f);
+    const rl::vec3 window = rl::ndc_to_window(ndc, 300, 200);
+    EXPECT_NEAR(window.x, 193.3f, 0.05f);
+    EXPECT_NEAR(window.y, 121.7f, 0.05f);
+    EXPECT_NEAR(window.z, 10.0f * 3 / (4 * 9), 1e-5f);  // lesson 03's f (w - n) / (w (f - n))
+}
+
 // The worked example of docs/05_perspective.md#perspective-correct-interpolation:
 // on an edge from w = 1 (attribute 0) to w = 3 (attribute 1), the screen
 // midpoint is the surface point a quarter of the way along, and the
