@@ -14,6 +14,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   05_clip_fan.svg            a triangle crossing the near plane, cut to a quad and drawn as a fan
   06_reflection_vectors.svg  the vectors n, l, v, r and h at a lit point
   06_srgb_curve.svg          sRGB bytes against linear light, bytes 128 and 188 marked
+  06_normal_matrix.svg       a circle squashed by M: the normal carried by M, and by M^-T
+  07_mirrored_seam.svg       a seam where the texture is mirrored: the two frames it needs
 """
 import math
 import pathlib
@@ -408,12 +410,84 @@ def srgb_curve(out):
     save(figure, out, "06_srgb_curve.svg")
 
 
+def normal_matrix(out):
+    # A unit circle squashed to half its height by M = diag(1, 0.5). At the
+    # point at 40 degrees, the tangent goes with M; the normal carried by M
+    # is no longer perpendicular to it, the one carried by M^-T is.
+    sx, sy = 1.0, 0.5
+    a = math.radians(40)
+    p = (math.cos(a), math.sin(a))
+    tangent = (-math.sin(a), math.cos(a))
+    normal = p
+    q = (sx * p[0], sy * p[1])
+    t_m = (sx * tangent[0], sy * tangent[1])
+    n_m = (sx * normal[0], sy * normal[1])
+    n_it = (normal[0] / sx, normal[1] / sy)
+
+    def unit(v, length=0.6):
+        n = math.hypot(*v)
+        return (v[0] / n * length, v[1] / n * length)
+
+    def degrees(u, v):
+        return math.degrees(math.acos((u[0] * v[0] + u[1] * v[1]) / (math.hypot(*u) * math.hypot(*v))))
+
+    figure, (left, right) = plt.subplots(1, 2, figsize=(9, 3.6))
+    ts = [2 * math.pi * i / 200 for i in range(201)]
+    left.plot([math.cos(t) for t in ts], [math.sin(t) for t in ts], color=INK)
+    right.plot([sx * math.cos(t) for t in ts], [sy * math.sin(t) for t in ts], color=INK)
+    for axes, origin, arrows in ((left, p, [(tangent, LINE, "tangent"), (normal, ACCENT, "normal")]),
+                                 (right, q, [(t_m, LINE, "M · tangent"), (n_m, "#999999", "M · normal"),
+                                             (n_it, ACCENT, "M⁻ᵀ · normal")])):
+        for v, colour, label in arrows:
+            d = unit(v)
+            axes.annotate("", (origin[0] + d[0], origin[1] + d[1]), origin,
+                          arrowprops=dict(arrowstyle="->", color=colour, lw=1.6))
+            axes.text(origin[0] + d[0] * 1.1, origin[1] + d[1] * 1.1, label, color=colour, fontsize=8)
+        axes.set_aspect("equal")
+        axes.set_xlim(-1.3, 1.9)
+        axes.set_ylim(-1.2, 1.5)
+        axes.axis("off")
+    left.set_title("a unit circle and one point's tangent and normal", fontsize=9)
+    right.set_title(f"squashed by M = diag(1, ½): M · normal is {abs(90 - degrees(t_m, n_m)):.0f}° off\n"
+                    f"perpendicular to the tangent, M⁻ᵀ · normal {abs(90 - degrees(t_m, n_it)):.0f}°", fontsize=9)
+    save(figure, out, "06_normal_matrix.svg")
+
+
+def mirrored_seam(out):
+    # A strip whose texture is mirrored about its middle line: u = |x|. On the
+    # left half u grows to the left, on the right half to the right; along the
+    # seam, one vertex needs both frames.
+    figure, axes = plt.subplots(figsize=(6.4, 3.4))
+    for x in range(-3, 4):
+        axes.plot([x, x], [0, 2], color="#bbbbbb", lw=0.6)
+    for y in range(3):
+        axes.plot([-3, 3], [y, y], color="#bbbbbb", lw=0.6)
+    axes.add_patch(Rectangle((-3, 0), 3, 2, color=SOFT, alpha=0.6))
+    axes.plot([0, 0], [0, 2], color=ACCENT, lw=1.5)
+    axes.text(0, 2.12, "seam: u = 0 on both sides", color=ACCENT, fontsize=8, ha="center")
+    for side, sign in (("left half: u = −x, T points left, w = −1", -1), ("right half: u = x, T points right, w = +1", 1)):
+        origin = (0.05 * sign, 1.0)
+        axes.annotate("", (origin[0] + 1.1 * sign, 1.0), origin, arrowprops=dict(arrowstyle="->", color=LINE, lw=1.8))
+        axes.annotate("", (origin[0], 1.9), origin, arrowprops=dict(arrowstyle="->", color="#208040", lw=1.8))
+        axes.text(origin[0] + 1.2 * sign, 1.05, "T", color=LINE, fontsize=9, ha="center")
+        axes.text(1.7 * sign, 0.25, side, color=INK, fontsize=7, ha="center")
+    axes.text(0.12, 1.8, "B", color="#208040", fontsize=9)
+    axes.text(0, -0.35, "averaged over both halves, T is zero (or whatever rounding leaves): split frames keep one per side",
+              fontsize=7, ha="center")
+    axes.set_xlim(-3.3, 3.3)
+    axes.set_ylim(-0.5, 2.4)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    save(figure, out, "07_mirrored_seam.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
-                 mip_footprint, clip_fan, perspective_edge, reflection_vectors, srgb_curve):
+                 mip_footprint, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
+                 mirrored_seam):
         draw(out)
 
 
