@@ -16,6 +16,7 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   06_srgb_curve.svg          sRGB bytes against linear light, bytes 128 and 188 marked
   06_normal_matrix.svg       a circle squashed by M: the normal carried by M, and by M^-T
   07_mirrored_seam.svg       a seam where the texture is mirrored: the two frames it needs
+  07_tbn_frame.svg           a triangle in the texture and on the surface, with T and B
 """
 import math
 import pathlib
@@ -481,13 +482,54 @@ def mirrored_seam(out):
     save(figure, out, "07_mirrored_seam.svg")
 
 
+def tbn_frame(out):
+    # A face's T and B solve [e1; e2] = [du1 dv1; du2 dv2] [T; B]: the surface
+    # directions in which u and v grow (tangents.cpp's face_frame), here on a
+    # triangle drawn flat so both panels are in the plane of the page.
+    uv = [(0.1, 0.1), (0.9, 0.25), (0.35, 0.85)]
+    pos = [(0.0, 0.0), (2.2, -0.4), (0.3, 1.6)]
+    d1 = (uv[1][0] - uv[0][0], uv[1][1] - uv[0][1])
+    d2 = (uv[2][0] - uv[0][0], uv[2][1] - uv[0][1])
+    e1 = (pos[1][0] - pos[0][0], pos[1][1] - pos[0][1])
+    e2 = (pos[2][0] - pos[0][0], pos[2][1] - pos[0][1])
+    det = d1[0] * d2[1] - d2[0] * d1[1]
+    t = ((e1[0] * d2[1] - e2[0] * d1[1]) / det, (e1[1] * d2[1] - e2[1] * d1[1]) / det)
+    b = ((e2[0] * d1[0] - e1[0] * d2[0]) / det, (e2[1] * d1[0] - e1[1] * d2[0]) / det)
+    figure, (left, right) = plt.subplots(1, 2, figsize=(9, 3.8))
+    left.add_patch(Rectangle((0, 0), 1, 1, fill=False, ec="#999999"))
+    left.add_patch(Polygon(uv, closed=True, color=SOFT, ec=LINE, lw=1.5))
+    left.annotate("", (0.45, 0.05), (0.05, 0.05), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.6))
+    left.annotate("", (0.05, 0.45), (0.05, 0.05), arrowprops=dict(arrowstyle="->", color="#208040", lw=1.6))
+    left.text(0.47, 0.03, "u", color=ACCENT, fontsize=9)
+    left.text(0.0, 0.47, "v", color="#208040", fontsize=9)
+    left.set_title("the face in the texture", fontsize=9)
+    right.add_patch(Polygon(pos, closed=True, color=SOFT, ec=LINE, lw=1.5))
+    centre = (sum(p[0] for p in pos) / 3, sum(p[1] for p in pos) / 3)
+    for v, colour, label in ((t, ACCENT, "T: where u grows"), (b, "#208040", "B: where v grows")):
+        scale = 0.5 / math.hypot(*v)
+        tip = (centre[0] + v[0] * scale, centre[1] + v[1] * scale)
+        right.annotate("", tip, centre, arrowprops=dict(arrowstyle="->", color=colour, lw=1.8))
+        right.text(tip[0] + 0.05, tip[1] + 0.05, label, color=colour, fontsize=8)
+    angle = math.degrees(math.acos((t[0] * b[0] + t[1] * b[1]) / (math.hypot(*t) * math.hypot(*b))))
+    right.set_title(f"the same face on the surface: T and B {angle:.0f}° apart here;\n"
+                    "the frame keeps T (made perpendicular to N) and rebuilds B = w (N × T)", fontsize=9)
+    for axes in (left, right):
+        axes.set_aspect("equal")
+        axes.axis("off")
+    left.set_xlim(-0.1, 1.1)
+    left.set_ylim(-0.1, 1.1)
+    right.set_xlim(-0.3, 2.6)
+    right.set_ylim(-0.6, 1.9)
+    save(figure, out, "07_tbn_frame.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
-                 mirrored_seam):
+                 mirrored_seam, tbn_frame):
         draw(out)
 
 
