@@ -75,7 +75,7 @@ struct PipelineOptions {
     // The most samples one draw may visit, in whole targets: 1000 times every
     // sample. The rasterizer visits every sample of a triangle's bounding box
     // within the target, so without a bound one screen-filling triangle
-    // repeated 100 000 times (a 1.4 MB OBJ) took 119 s, and a fan of 409 600
+    // repeated 100 000 times (a 1.4 MB OBJ) took 119 s, and a fan of 409 400
     // thin triangles (2 MB) 35 s; a real scene's boxes cover its image a few
     // times over. 0: no bound.
     double max_overdraw = 1000;

@@ -76,8 +76,9 @@ std::vector<rl::vec4> corner_tangents(const rl::Mesh& mesh, const std::vector<rl
     // `split` opens a new slot for a face whose frame disagrees with every
     // slot's: opposite handedness (mirrored UVs), or a tangent more than 45
     // degrees from the slot's (UVs turned, as an island rotated 90 degrees
-    // is). A position holds at most kMaxSlots; a face that agrees with none
-    // of them then joins the nearest of its handedness, so the work stays
+    // is). Past kMaxSlots slots at a position, a face that agrees with none
+    // joins the nearest of its handedness (one more slot opens only if all
+    // share the other handedness: at most kMaxSlots + 1), so the work stays
     // linear in the faces around a vertex however many there are.
     struct Slot {
         rl::dvec3 tangent, bitangent;

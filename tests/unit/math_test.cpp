@@ -36,7 +36,7 @@ TEST(Vec, NormalizeGivesUnitLengthAndKeepsZero) {
 }
 
 // Squared components below FLT_MIN are subnormal and keep few digits: a
-// length taken from them is off by up to 10% (0.918 at |v| = 7e-23), so such
+// length taken from them is off by up to 10% (issue 17's audit saw 0.918 at |v| = 7e-23), so such
 // a vector is scaled before it is normalised, as one past 1e19 is.
 TEST(Vec, NormalizeGivesUnitLengthWhenTheSquaresUnderflowOrOverflow) {
     for (const vec3& v : {vec3{7e-23f, 3e-23f, 1e-23f}, vec3{5e-24f, 0, 2e-24f},
