@@ -48,7 +48,8 @@ std::string depth_precision_warning(const Camera& camera) {
     char text[200];
     std::snprintf(text, sizeof text,
                   "--near/--far: near / far is %.2g, below 1e-5: depths near the far plane round "
-                  "to the clear value and some pixels are lost (0.3-1.3%% of the default scenes' at 1e-6); raise "
+                  "to the clear value and some pixels are lost (0.3-1.3%% of the default scenes' "
+                  "at 1e-6); raise "
                   "--near or lower --far",
                   ratio);
     return text;
