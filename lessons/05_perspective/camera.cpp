@@ -18,7 +18,7 @@ void check(const Camera& camera) {
     if (!(camera.near < camera.far)) throw std::invalid_argument("--near/--far: need near < far");
     if (const double ratio = static_cast<double>(camera.near) / camera.far;
         ratio < kSmallestNearOverFar) {
-        char text[220];
+        char text[320];
         std::snprintf(text, sizeof text,
                       "--near/--far: near / far is %.2g, below 1e-7: a float depth buffer rounds "
                       "the depth of nearly every point to the clear value and draws almost "
@@ -45,7 +45,7 @@ void check(const Camera& camera) {
 std::string depth_precision_warning(const Camera& camera) {
     const double ratio = static_cast<double>(camera.near) / camera.far;
     if (ratio >= kWarnedNearOverFar) return {};
-    char text[200];
+    char text[320];
     std::snprintf(text, sizeof text,
                   "--near/--far: near / far is %.2g, below 1e-5: depths near the far plane round "
                   "to the clear value and some pixels are lost (0.3-1.3%% of the default scenes' "
