@@ -18,7 +18,7 @@ PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
 }
 
 void throw_overdraw(double most) {
-    char text[240];
+    char text[320];
     std::snprintf(text, sizeof text,
                   "the triangles' bounding boxes cover more than %.3g samples, 1000 times the "
                   "image's: refusing to spend minutes on them (a scene's cover its image a few "
