@@ -9,8 +9,8 @@
 //   const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
 #pragma once
 
-#include <string>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "camera.hpp"

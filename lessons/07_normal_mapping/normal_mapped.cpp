@@ -8,7 +8,7 @@ namespace {
 
 std::optional<textures::MipChain> load_map(const rl::Mesh& mesh, rl::TextureRole role,
                                            std::vector<std::string>& warnings) {
-    if (!rl::find_texture(mesh, 0, role)) return std::nullopt;        // the model has none
+    if (!rl::find_texture(mesh, 0, role)) return std::nullopt;  // the model has none
     rl::Texture t = rl::load_texture(mesh, 0, role, warnings);  // warns if unreadable
     if (t.is_default) return std::nullopt;
     return textures::MipChain(std::move(t.image));

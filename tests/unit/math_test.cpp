@@ -39,8 +39,8 @@ TEST(Vec, NormalizeGivesUnitLengthAndKeepsZero) {
 // length taken from them is off by up to 10% (issue 17's audit saw 0.918 at |v| = 7e-23), so such
 // a vector is scaled before it is normalised, as one past 1e19 is.
 TEST(Vec, NormalizeGivesUnitLengthWhenTheSquaresUnderflowOrOverflow) {
-    for (const vec3& v : {vec3{7e-23f, 3e-23f, 1e-23f}, vec3{5e-24f, 0, 2e-24f},
-                          vec3{1e-40f, 0, 0}, vec3{3e19f, 4e19f, 0}, vec3{3e37f, 4e37f, 0}}) {
+    for (const vec3& v : {vec3{7e-23f, 3e-23f, 1e-23f}, vec3{5e-24f, 0, 2e-24f}, vec3{1e-40f, 0, 0},
+                          vec3{3e19f, 4e19f, 0}, vec3{3e37f, 4e37f, 0}}) {
         const vec3 n = normalize(v);
         const dvec3 exact = normalize(cast<double>(v));
         for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(n[i], exact[i], 1e-6) << v;

@@ -16,7 +16,8 @@ struct Options {
 // Takes --quick and --out DIR off the command line, answers --help, and
 // hands the rest to Google Benchmark with the repetition settings of the
 // mode: full mode 5 repetitions of at least 0.2 s each, interleaved in a
-// random order across the benchmarks; quick mode one short run. Flags given by the user (--benchmark_...) win over these defaults.
+// random order across the benchmarks; quick mode one short run. Flags given by the user
+// (--benchmark_...) win over these defaults.
 Options init(int& argc, char** argv, const std::string& description);
 
 struct Timing {
