@@ -35,6 +35,19 @@ double degrees_between(rl::vec3 a, rl::vec3 b) {
     return std::acos(std::clamp(double(rl::dot(a, b)), -1.0, 1.0)) * 180 / 3.14159265358979;
 }
 
+// Uniforms of an untransformed model seen from (0, 0, 5): object space is
+// world space, so a shader's normals can be compared as they come.
+shading::Uniforms identity_uniforms() {
+    return {rl::mat4::identity(),
+            rl::mat3::identity(),
+            rl::mat4::identity(),
+            {0, 0, 5},
+            shading::default_lighting(rl::vec3{0, 0, 1}),
+            nullptr,
+            {},
+            {}};
+}
+
 MappedModel load_globe(TangentMethod method) {
     std::vector<std::string> warnings;
     return load_mapped_model(rl::project_model("globe"), rl::mat4::identity(), method, warnings);
@@ -74,14 +87,7 @@ TEST(NormalMappingTest, TheGlobesTwoMapsAgreeUnderTheOpenGlConvention) {
 // decodes the maps itself, so flipping green in normal_at passed it.)
 TEST(NormalMappingTest, TheShadersTangentAndObjectSpaceNormalsAgreeOnTheGlobe) {
     const MappedModel globe = load_globe(TangentMethod::split);
-    const shading::Uniforms u{rl::mat4::identity(),
-                              rl::mat3::identity(),
-                              rl::mat4::identity(),
-                              {0, 0, 5},
-                              shading::default_lighting(rl::vec3{0, 0, 1}),
-                              nullptr,
-                              {},
-                              {}};
+    const shading::Uniforms u = identity_uniforms();
     NormalMappedShader tangent{
         u, globe.maps, NormalMap::tangent, shading::Specular::blinn_phong, 1.0f, &globe.tangents};
     NormalMappedShader object = tangent;
@@ -261,14 +267,7 @@ TEST(NormalMappingTest, AMapNormalTooShortToHoldADirectionKeepsTheInterpolatedNo
     Maps maps;
     maps.tangent_normals = textures::MipChain(checker);
     maps.object_normals = textures::MipChain(checker);
-    const shading::Uniforms u{rl::mat4::identity(),
-                              rl::mat3::identity(),
-                              rl::mat4::identity(),
-                              {0, 0, 5},
-                              shading::default_lighting(rl::vec3{0, 0, 1}),
-                              nullptr,
-                              {},
-                              {}};
+    const shading::Uniforms u = identity_uniforms();
     const std::vector<rl::vec4> tangents(3, rl::vec4{1, 0, 0, 1});
     perspective::Fragment<NormalMappedShader::Varyings> f{};
     f.varyings = {{0, 0, 0}, {0, 0.6f, 0.8f}, {1, 0, 0}, 1, {0.5f, 0.5f}};  // between the 4 texels
