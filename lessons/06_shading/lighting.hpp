@@ -54,6 +54,27 @@ struct Reflection {
     Colour<T> diffuse, specular;
 };
 
+// How well the light's reflection lines up with the eye, in [-1, 1]: Phong's
+// r . v (r: the light's direction mirrored about n) or Blinn's n . h (h:
+// halfway between the light and the eye). n_dot_l is n . l, already known.
+template <class T>
+T alignment(rl::Vec<3, T> n, rl::Vec<3, T> to_light, rl::Vec<3, T> to_eye, T n_dot_l,
+            Specular specular) {
+    if (specular == Specular::phong) return rl::dot(n * (2 * n_dot_l) - to_light, to_eye);
+    return rl::dot(n, rl::normalize(to_light + to_eye));
+}
+
+// The highlight's strength: the alignment to the power `shininess`, with the
+// alignment clamped at 0 first. Unclamped, pow of a negative base is NaN for
+// a fractional exponent and a false highlight for an even one (docs/06_shading.md#lighting).
+template <class T>
+T highlight(T alignment, T shininess) {
+    // pow(0, 0) is 1: an exponent of 0 makes the highlight cover the lit side.
+    // (A base of 0 with any other exponent is 0: no pow needed.)
+    const T base = std::max(alignment, T(0));
+    return base > 0 || shininess == 0 ? std::pow(base, shininess) : T(0);
+}
+
 template <class T>
 Reflection<T> reflection(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3, T> to_eye,
                          Specular specular) {
@@ -61,20 +82,9 @@ Reflection<T> reflection(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3
     for (const Light<T>& light : lighting.lights) {
         const T n_dot_l = rl::dot(n, light.direction);
         if (!(n_dot_l > 0)) continue;  // the light is behind the surface (or n is NaN)
-        T s = 0;                       // how well the reflection lines up with the eye
-        if (specular == Specular::phong) {
-            const rl::Vec<3, T> r = n * (2 * n_dot_l) - light.direction;  // l mirrored about n
-            s = rl::dot(r, to_eye);
-        } else {
-            s = rl::dot(n, rl::normalize(light.direction + to_eye));  // n . h
-        }
-        // pow(0, 0) is 1: an exponent of 0 makes the highlight cover the lit side.
-        // (A base of 0 with any other exponent is 0: no pow needed.)
-        const T base = std::max(s, T(0));
-        const T highlight =
-            base > 0 || lighting.shininess == 0 ? std::pow(base, lighting.shininess) : T(0);
+        const T s = alignment(n, light.direction, to_eye, n_dot_l, specular);
         out.diffuse += light.colour * n_dot_l;
-        out.specular += light.colour * lighting.specular * highlight;
+        out.specular += light.colour * lighting.specular * highlight(s, lighting.shininess);
     }
     return out;
 }

@@ -12,11 +12,11 @@
 #include <numbers>
 
 #include "05_perspective/scene.hpp"
+#include "clipping_scenes.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/texture_files.hpp"
-#include "ray_truth.hpp"
 
 namespace {
 
@@ -127,12 +127,6 @@ void draw_interpolation_case(benchmark::State& state, InterpolationCase* c) {
 
 // ---------------------------------------------------------------- 2. clipping
 
-struct ClippingScene {
-    std::string name;
-    Camera camera;
-    std::vector<WorldTriangle> triangles;
-};
-
 void draw_clipping_case(benchmark::State& state, const ClippingScene* scene, ClipMode mode,
                         int size) {
     PipelineOptions options;
@@ -140,29 +134,6 @@ void draw_clipping_case(benchmark::State& state, const ClippingScene* scene, Cli
     for (auto _ : state)
         benchmark::DoNotOptimize(
             pipeline_ids(scene->triangles, scene->camera, size, size, options).get(0, 0));
-}
-
-// A floor 1000 x 1000 of 20 x 20 cells (800 triangles), seen from 0.3 above
-// with the near plane at 0.02: the cells around the eye cross the near plane,
-// and, cut at it, reach window coordinates far past the rasterizer's 2^22.
-ClippingScene floor_scene() {
-    ClippingScene s{"floor from 0.3 above", {}, {}};
-    s.camera.eye = {0, 0.3f, 0};
-    s.camera.target = {0, 0.2f, -1};
-    s.camera.fov_y = 60;
-    s.camera.near = 0.02f;
-    s.camera.far = 600;
-    const int n = 20;
-    const double extent = 500;
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-            const double x0 = -extent + 2 * extent * i / n, x1 = -extent + 2 * extent * (i + 1) / n;
-            const double z0 = extent - 2 * extent * j / n, z1 = extent - 2 * extent * (j + 1) / n;
-            const rl::dvec3 a{x0, 0, z0}, b{x1, 0, z0}, c{x1, 0, z1}, d{x0, 0, z1};
-            s.triangles.push_back({{a, b, c}, {}});
-            s.triangles.push_back({{a, c, d}, {}});
-        }
-    return s;
 }
 
 // ---------------------------------------------------------------- 3. level of detail
@@ -302,16 +273,8 @@ int main(int argc, char** argv) {
 
         // 2. Clipping.
         const int clip_size = options.quick ? 96 : 512;
-        Camera around_camera;
-        around_camera.eye = {0, 0, 0};
-        around_camera.target = {0, 0, -1};
-        around_camera.fov_y = 60;
-        around_camera.near = 0.1f;
-        around_camera.far = 50;
         const std::vector<ClippingScene> clipping_scenes = {
-            {"200 triangles around the eye", around_camera,
-             triangles_around(around_camera, options.quick ? 40 : 200, 5, 3.0)},
-            floor_scene()};
+            around_eye_scene(options.quick ? 40 : 200), floor_scene()};
         const auto clipping_name = [](const ClippingScene& s, ClipMode m) {
             return "clip/" + s.name + "/" + name(m);
         };

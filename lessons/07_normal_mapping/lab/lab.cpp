@@ -20,6 +20,7 @@
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/texture_files.hpp"
+#include "test_surfaces.hpp"
 #include "tinyrenderer_port.hpp"
 
 namespace {
@@ -286,38 +287,9 @@ int main(int argc, char** argv) {
             sizes.add_row({static_cast<long long>(full.level(level).width()),
                            std::string("tangent map, split frames"), e.mean, e.p99});
         }
-        // A mirrored plane: the square [-1, 1]^2 in 8 x 8 cells whose u runs
-        // |x| (mirrored at x = 0, as symmetric models are painted), positions
-        // shared along the mirror line. Its faces are planar with affine UVs,
-        // so each face's own frame is exact; against those frames:
-        MappedModel plane = load_mapped_model(rl::project_model("crate"), rl::mat4::identity(),
-                                              TangentMethod::face, warnings);
-        {
-            rl::Mesh& square = plane.lit.model.mesh;
-            square.positions.clear();
-            square.uvs.clear();
-            square.normals = {{0, 0, 1}};
-            square.faces.clear();
-            const int n = 8;
-            for (int j = 0; j <= n; ++j)
-                for (int i = 0; i <= n; ++i) {
-                    const float x = -1 + 2.0f * i / n, y = -1 + 2.0f * j / n;
-                    square.positions.push_back({x, y, 0});
-                    square.uvs.push_back({std::abs(x), (y + 1) / 2});
-                }
-            const auto corner = [&](int i, int j) {
-                return rl::Corner{j * (n + 1) + i, j * (n + 1) + i, 0};
-            };
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i) {
-                    square.faces.push_back(
-                        {{corner(i, j), corner(i + 1, j), corner(i + 1, j + 1)}, 0});
-                    square.faces.push_back(
-                        {{corner(i, j), corner(i + 1, j + 1), corner(i, j + 1)}, 0});
-                }
-            plane.lit.normals = shading::corner_normals(square, shading::Weighting::angle);
-            plane.lit.model.box = perspective::bounds(square, rl::mat4::identity());
-        }
+        // The mirrored plane (test_surfaces.hpp): each face's own frame is
+        // exact there; against those frames:
+        MappedModel plane = mirrored_plane(TangentMethod::face, warnings);
         Globe crate{std::move(plane), {}, g.size, {}};
         crate.camera = g.camera;
         crate.camera.eye = {0.3f, -0.4f, 2.4f};
