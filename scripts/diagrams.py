@@ -11,6 +11,7 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   04_mip_footprint.svg       a pixel's footprint in the texture and its mip level
   05_perspective_edge.svg    along an edge from w = 1 to w = 3: screen position against
                              surface position, and 1/w linear on the screen
+  05_frustum_ndc.svg         the view frustum seen from the side, and the NDC cube it becomes
   05_clip_fan.svg            a triangle crossing the near plane, cut to a quad and drawn as a fan
   06_reflection_vectors.svg  the vectors n, l, v, r and h at a lit point
   06_srgb_curve.svg          sRGB bytes against linear light, bytes 128 and 188 marked
@@ -322,6 +323,59 @@ def perspective_edge(out):
     save(figure, out, "05_perspective_edge.svg")
 
 
+def frustum_ndc(out):
+    # The page's walk-through: fov 60 degrees, near 1, far 10, the eye-space
+    # point (1, 0.5, -4). Left: the frustum from the side (view distance
+    # d = -z_e across, y_e up). Right: the same in NDC (z_ndc across, y_ndc
+    # up), the frustum now the cube [-1, 1]^3; equal steps of distance
+    # crowd towards the far face, as z_ndc is linear in 1/d.
+    near, far, half_angle = 1.0, 10.0, math.radians(30)
+    a, b = -(far + near) / (far - near), -2 * far * near / (far - near)
+    point_y, point_d = 0.5, 4.0
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.6), gridspec_kw={"width_ratios": [1.7, 1]})
+    t = math.tan(half_angle)
+    left.add_patch(Polygon([(near, -near * t), (far, -far * t), (far, far * t), (near, near * t)], closed=True,
+                           color=SOFT, ec=LINE, lw=1.2))
+    left.plot([0, far], [0, far * t], color="#999999", lw=0.8, ls="--")
+    left.plot([0, far], [0, -far * t], color="#999999", lw=0.8, ls="--")
+    left.plot([0], [0], "o", color=INK)
+    left.text(-0.2, 0.35, "eye", fontsize=8, ha="right")
+    left.plot([0, point_d], [0, point_y], color=ACCENT, lw=0.8, ls=":")
+    left.plot([point_d], [point_y], "o", color=ACCENT)
+    left.text(point_d + 0.15, point_y + 0.15, "(y 0.5, d 4)", color=ACCENT, fontsize=8)
+    for d in range(1, 11):
+        left.plot([d, d], [-0.12, 0.12], color=INK, lw=0.6)
+    left.text(near, -near * t - 0.7, "near, d = 1", fontsize=8, ha="center", color=LINE)
+    left.text(far, -far * t - 0.7, "far, d = 10", fontsize=8, ha="center", color=LINE)
+    left.text(5.5, 4.4, "y = ±d · tan(θ/2), θ = 60°", fontsize=8, ha="center", rotation=0)
+    left.set_xlim(-1.2, 11)
+    left.set_ylim(-6.6, 6.6)
+    left.set_aspect("equal")
+    left.axis("off")
+    left.set_title("Eye space, from the side: the view frustum\n(view distance d = −z_e across)", fontsize=8)
+
+    right.add_patch(Rectangle((-1, -1), 2, 2, color=SOFT, ec=LINE, lw=1.2))
+    for d in range(1, 11):  # equal steps of distance, where they land in NDC
+        z = (a * -d + b) / d
+        right.plot([z, z], [-1, -0.9], color=INK, lw=0.6)
+        if d in (1, 2, 4, 10):
+            right.text(z, -1.12, str(d), fontsize=7, ha="center", va="top")
+    z_point = (a * -point_d + b) / point_d
+    y_point = (1 / t) * point_y / point_d
+    right.plot([z_point], [y_point], "o", color=ACCENT)
+    right.text(z_point - 0.05, y_point + 0.1, "(y 0.217, z 0.667)", color=ACCENT, fontsize=8, ha="right")
+    right.text(-1, 1.08, "near: z = −1", fontsize=8, color=LINE, ha="center")
+    right.text(1, 1.08, "far: z = +1", fontsize=8, color=LINE, ha="center")
+    right.text(0, -1.45, "d = 1 … 10 in NDC z: crowded towards far", fontsize=7, ha="center")
+    right.set_xlim(-1.5, 1.5)
+    right.set_ylim(-1.7, 1.4)
+    right.set_aspect("equal")
+    right.axis("off")
+    right.set_title("NDC, after dividing by w = d:\nthe frustum is the cube [−1, 1]³ (y_ndc up, z_ndc across)",
+                    fontsize=8)
+    save(figure, out, "05_frustum_ndc.svg")
+
+
 def clip_fan(out):
     # Seen from above (x across, view depth down the page): a triangle with one
     # corner behind the near plane, cut by Sutherland-Hodgman into a convex
@@ -528,7 +582,7 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
-                 mip_footprint, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
+                 mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame):
         draw(out)
 
