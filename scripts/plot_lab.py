@@ -27,13 +27,20 @@ def number(text):
 TIME_NOISE = 0.15
 
 
-def pareto_front(points):
+def pareto_front(points, spreads=None):
     """Indices of the points not dominated in (x = time, y = error), both
-    smaller-is-better, with times within TIME_NOISE of each other tied."""
+    smaller-is-better, with times within TIME_NOISE of each other tied. With
+    spreads (each point's fastest and slowest run), times whose ranges
+    overlap are tied too: one is clearly faster only if its slowest run beat
+    the other's fastest."""
     def beats(j, i):
         (xj, yj), (xi, yi) = points[j], points[i]
         clearly_faster = xj * (1 + TIME_NOISE) < xi
         not_slower = xj <= xi * (1 + TIME_NOISE)
+        if spreads:
+            (low_j, high_j), (low_i, high_i) = spreads[j], spreads[i]
+            clearly_faster = clearly_faster and high_j < low_i
+            not_slower = not_slower or low_j <= high_i
         return (yj <= yi and clearly_faster) or (yj < yi and not_slower)
 
     front = []
@@ -117,6 +124,19 @@ def spread_labels(figure, axes, labels, points):
 
 
 def finish(figure, axes, options, rows, before_save=None):
+    """Scales, ticks and axis labels of each of `axes` (one or a list: the
+    panels, which share their scales), then the SVG."""
+    for one in axes if isinstance(axes, list) else [axes]:
+        scale_axes(one, options, rows)
+    figure.tight_layout()
+    if before_save:
+        before_save()
+    options.svg.parent.mkdir(parents=True, exist_ok=True)
+    figure.savefig(options.svg, metadata={"Date": None})
+    print(f"wrote {options.svg}")
+
+
+def scale_axes(axes, options, rows):
     from matplotlib.ticker import NullLocator
 
     if options.logx:
@@ -147,15 +167,9 @@ def finish(figure, axes, options, rows, before_save=None):
         else:
             axes.set_yscale("log")
             plain_log_ticks(axes.yaxis, min(positive), max(positive))
-    axes.set_xlabel(options.xlabel or options.x)
-    axes.set_ylabel(options.ylabel or options.y)
+    axes.set_xlabel(options.xlabel or options.x, fontsize=8 if options.panel else None)
+    axes.set_ylabel(options.ylabel or options.y, fontsize=8 if options.panel else None)
     axes.grid(True, which="both", alpha=0.3)
-    figure.tight_layout()
-    if before_save:
-        before_save()
-    options.svg.parent.mkdir(parents=True, exist_ok=True)
-    figure.savefig(options.svg, metadata={"Date": None})
-    print(f"wrote {options.svg}")
 
 
 def draw_lines(plt, rows, options):
@@ -175,6 +189,10 @@ def draw_lines(plt, rows, options):
                 continue
             axes.plot([p[0] for p in points], [p[1] for p in points], linestyle=dashes[j % len(dashes)],
                       color=f"C{i}", marker="o", markersize=3, label=label)
+            if options.point_labels:  # each point named by its value of that column (e.g. segments)
+                for r in members:
+                    axes.annotate(r[options.point_labels], (number(r[options.x]), number(r[options.y])),
+                                  textcoords="offset points", xytext=(3, 3), fontsize=6, color=f"C{i}")
     axes.set_title(options.title, fontsize=10)
     axes.legend(fontsize=7, ncol=2, handlelength=4)  # long enough handles to show the dashes
     if flat:
@@ -190,6 +208,41 @@ def draw_lines(plt, rows, options):
         print(f"wrote {options.table}")
 
 
+def scatter_with_fronts(axes, rows, options, label, key, front_keys):
+    """The rows as labelled points, coloured by group, each group's best
+    trade-offs circled and joined; their keys are added to front_keys."""
+    groups = {}
+    for row in rows:
+        groups.setdefault(row[options.group] if options.group else "", []).append(row)
+    labels, all_points = [], []
+    for index, (group, members) in enumerate(groups.items()):
+        colour = f"C{index}"
+        points = [(number(r[options.x]), number(r[options.y])) for r in members]
+        axes.scatter([p[0] for p in points], [p[1] for p in points], color=colour, s=36, zorder=3,
+                     label=f"{options.group} {group}" if options.group else None)
+        shown = [c for c in label if c not in (options.group, options.panel)]
+        for row, (x, y) in zip(members, points):
+            labels.append(axes.annotate(" ".join(row[c] for c in shown), (x, y),
+                                        textcoords="offset points", xytext=(6, 4),
+                                        fontsize=7 if options.panel else 8))
+            all_points.append((x, y))
+        spreads = None
+        if options.x_spread:  # each point's fastest and slowest run, drawn as a bar
+            low, high = options.x_spread.split(",")
+            spreads = [(number(r[low]), number(r[high])) for r in members]
+            axes.errorbar([p[0] for p in points], [p[1] for p in points],
+                          xerr=[[max(p[0] - lo, 0) for p, (lo, hi) in zip(points, spreads)],
+                                [max(hi - p[0], 0) for p, (lo, hi) in zip(points, spreads)]],
+                          fmt="none", ecolor=colour, elinewidth=0.8, alpha=0.6, zorder=2)
+        front = pareto_front(points, spreads)
+        front_keys.update(key(members[i]) for i in front)
+        axes.plot([points[i][0] for i in front], [points[i][1] for i in front], linestyle="--",
+                  color=colour, linewidth=1, zorder=2)
+        axes.scatter([points[i][0] for i in front], [points[i][1] for i in front], s=140,
+                     facecolors="none", edgecolors=colour, linewidths=1.5, zorder=4)
+    return labels, all_points
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("csv", type=pathlib.Path)
@@ -198,10 +251,15 @@ def main():
     parser.add_argument("--label", help="column(s) naming a point, comma-separated (scatter)")
     parser.add_argument("--series", help="draw lines instead: one line per value of this column")
     parser.add_argument("--style", help="with --series: line style per value of this column")
+    parser.add_argument("--point-labels", help="with --series: name each point by this column's value")
     parser.add_argument("--group", help="column whose values get their own colour and front")
+    parser.add_argument("--panel", help="column whose values get a small chart each, with its own fronts")
     parser.add_argument("--xlabel", default=None)
     parser.add_argument("--ylabel", default=None)
     parser.add_argument("--title", default="")
+    parser.add_argument("--x-spread", metavar="MIN,MAX",
+                        help="columns of each point's fastest and slowest run: drawn as a bar, and "
+                             "times whose ranges overlap are tied")
     parser.add_argument("--logx", action="store_true")
     parser.add_argument("--logy", action="store_true")
     parser.add_argument("--svg", type=pathlib.Path, required=True)
@@ -233,42 +291,56 @@ def main():
     if not options.label:
         sys.exit("--label or --series is required")
     label = options.label.split(",")
-    for column in [options.x, options.y, *label] + ([options.group] if options.group else []):
+    spread_columns = options.x_spread.split(",") if options.x_spread else []
+    if options.x_spread and len(spread_columns) != 2:
+        sys.exit("--x-spread: two columns, MIN,MAX")
+    for column in [options.x, options.y, *label, *spread_columns] + [c for c in (options.group, options.panel) if c]:
         if column not in rows[0]:
             sys.exit(f"{options.csv}: no column '{column}'")
 
-    groups = {}
-    for row in rows:
-        groups.setdefault(row[options.group] if options.group else "", []).append(row)
-
-    # A row's identity for the best trade-offs: its group and its label. (By
-    # the label alone, a method best in one group was marked best in all.)
+    # A row's identity for the best trade-offs: its panel, its group and its
+    # label. (By the label alone, a method best in one group was marked best in all.)
     def key(row):
-        return (row[options.group] if options.group else "",) + row_key(row, label)
+        return tuple(row[c] if c else "" for c in (options.panel, options.group)) + row_key(row, label)
 
-    figure, axes = plt.subplots(figsize=(8.5, 5))
+    panels = {}
+    for row in rows:
+        panels.setdefault(row[options.panel] if options.panel else "", []).append(row)
+
+    if options.panel:  # one small chart per value, side by side, two to a row, on shared scales
+        columns_n = min(2, len(panels))
+        rows_n = math.ceil(len(panels) / columns_n)
+        figure, grid = plt.subplots(rows_n, columns_n, figsize=(5.2 * columns_n, 3.6 * rows_n + 0.6),
+                                    sharex=True, sharey=True, squeeze=False)
+        all_axes = [a for line in grid for a in line]
+        for spare in all_axes[len(panels):]:
+            spare.set_visible(False)
+        all_axes = all_axes[:len(panels)]
+    else:
+        figure, single = plt.subplots(figsize=(8.5, 5))
+        all_axes = [single]
     front_keys = set()
-    labels, all_points = [], []
-    for index, (group, members) in enumerate(groups.items()):
-        colour = f"C{index}"
-        points = [(number(r[options.x]), number(r[options.y])) for r in members]
-        axes.scatter([p[0] for p in points], [p[1] for p in points], color=colour, s=36, zorder=3,
-                     label=f"{options.group} {group}" if options.group else None)
-        for row, (x, y) in zip(members, points):
-            labels.append(axes.annotate(" ".join(row[c] for c in label if c != options.group), (x, y),
-                                        textcoords="offset points", xytext=(6, 4), fontsize=8))
-            all_points.append((x, y))
-        front = pareto_front(points)
-        front_keys.update(key(members[i]) for i in front)
-        axes.plot([points[i][0] for i in front], [points[i][1] for i in front], linestyle="--",
-                  color=colour, linewidth=1, zorder=2)
-        axes.scatter([points[i][0] for i in front], [points[i][1] for i in front], s=140,
-                     facecolors="none", edgecolors=colour, linewidths=1.5, zorder=4)
-    axes.set_title(options.title + "\n(circled: best trade-offs; times within 15% count as ties)",
-                   fontsize=10)
+    placements = []
+    for axes, (panel, panel_rows) in zip(all_axes, panels.items()):
+        labels, points = scatter_with_fronts(axes, panel_rows, options, label, key, front_keys)
+        placements.append((axes, labels, points))
+        if options.panel:
+            axes.set_title(f"{options.panel} {panel}", fontsize=9)
+    title = options.title + ("\n(circled: best trade-offs; bars: fastest to slowest run;\n"
+                             "times within 15% or with overlapping runs are ties)" if options.x_spread else
+                             "\n(circled: best trade-offs; times within 15% count as ties)")
+    if options.panel:
+        figure.suptitle(title, fontsize=10)
+    else:
+        all_axes[0].set_title(title, fontsize=10)
     if options.group:  # beside the plot, where it cannot cover a point or a label
-        axes.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
-    finish(figure, axes, options, rows, lambda: spread_labels(figure, axes, labels, all_points))
+        all_axes[0].legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
+
+    def place_labels():
+        for axes, labels, points in placements:
+            spread_labels(figure, axes, labels, points)
+
+    finish(figure, all_axes if options.panel else all_axes[0], options, rows, place_labels)
 
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())

@@ -90,6 +90,14 @@ class RenderTarget {
     int height() const { return height_; }
     int samples() const { return samples_; }
 
+    // Between frames, what glClear does: every colour attachment back to the
+    // given values and the depth to its state's clear value, in place (a
+    // frame loop then allocates nothing).
+    void clear(Pixels... clear_values) {
+        std::apply([&](auto&... grids) { (grids.fill(clear_values), ...); }, colour_);
+        if (!depth_.empty()) depth_.fill(depth_state.clear);
+    }
+
     template <std::size_t I = 0>
     auto& colour() {
         return std::get<I>(colour_);

@@ -64,14 +64,22 @@ struct UvFrame {
     std::size_t fragments = 0;
 };
 
+// Draws into `target`, cleared first (the benchmark reuses one target, so
+// that a frame's time is drawing, not allocating 16 bytes a pixel).
+std::size_t draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera,
+                    Interpolation interpolation, WorldTarget& target) {
+    target.clear(-1, rl::vec2{NAN, NAN});
+    PipelineOptions options;
+    options.interpolation = interpolation;
+    return draw(WorldScene{&scene}, WorldProgram{view_projection(camera, 1.0f)}, target, options)
+        .fragments;
+}
+
 UvFrame draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera, int size,
                 Interpolation interpolation) {
     WorldTarget target = world_target(size, size);
-    PipelineOptions options;
-    options.interpolation = interpolation;
-    const PipelineCounts counts =
-        draw(WorldScene{&scene}, WorldProgram{view_projection(camera, 1.0f)}, target, options);
-    return {target.colour<1>(), counts.fragments};
+    const std::size_t fragments = draw_uv(scene, camera, interpolation, target);
+    return {target.colour<1>(), fragments};
 }
 
 // Mean and largest distance from the exact uv, in texels of a 256 x 256 texture.
@@ -118,10 +126,10 @@ struct InterpolationCase {
 
 void draw_interpolation_case(benchmark::State& state, InterpolationCase* c) {
     const Camera camera = quad_camera();
+    WorldTarget target = world_target(c->size, c->size);
     for (auto _ : state) {
-        const UvFrame frame = draw_uv(c->scene, camera, c->size, c->interpolation);
-        benchmark::DoNotOptimize(frame.uv.get(0, 0));
-        c->fragments = frame.fragments;
+        c->fragments = draw_uv(c->scene, camera, c->interpolation, target);
+        benchmark::DoNotOptimize(target.colour<1>().get(0, 0));
     }
 }
 
@@ -131,9 +139,13 @@ void draw_clipping_case(benchmark::State& state, const ClippingScene* scene, Cli
                         int size) {
     PipelineOptions options;
     options.clip = mode;
-    for (auto _ : state)
-        benchmark::DoNotOptimize(
-            pipeline_ids(scene->triangles, scene->camera, size, size, options).get(0, 0));
+    WorldTarget target = world_target(size, size);
+    const WorldProgram program{view_projection(scene->camera, 1.0f)};
+    for (auto _ : state) {  // one target, cleared each frame: drawing is timed, not allocating
+        target.clear(-1, rl::vec2{NAN, NAN});
+        draw(WorldScene{&scene->triangles}, program, target, options);
+        benchmark::DoNotOptimize(target.colour<0>().get(0, 0));
+    }
 }
 
 // ---------------------------------------------------------------- 3. level of detail
@@ -314,21 +326,23 @@ int main(int argc, char** argv) {
 
         const auto timings = rl::lab::run_benchmarks();
 
-        rl::ResultsTable interpolation({"method", "tilt", "image_size", "ns_per_pixel",
-                                        "mean_error_texels", "max_error_texels", "triangles"});
+        rl::ResultsTable interpolation({"method", "tilt", "image_size", "ns_per_pixel", "ns_min",
+                                        "ns_max", "mean_error_texels", "max_error_texels",
+                                        "triangles"});
         const Camera camera = quad_camera();
         for (const InterpolationCase& c : cases) {
             const UvError e = uv_error(draw_uv(c.scene, camera, c.size, c.interpolation),
                                        tilted_quad(c.tilt, 1), camera, c.size);
+            const rl::lab::Timing& t = timings.at(interpolation_name(c));
+            const double pixels = static_cast<double>(std::max<std::size_t>(c.fragments, 1));
             interpolation.add_row({c.method, c.tilt, static_cast<long long>(c.size),
-                                   timings.at(interpolation_name(c)).median_ns /
-                                       static_cast<double>(std::max<std::size_t>(c.fragments, 1)),
+                                   t.median_ns / pixels, t.min_ns / pixels, t.max_ns / pixels,
                                    e.mean, e.max, static_cast<long long>(c.scene.size())});
         }
 
-        rl::ResultsTable clipping({"mode", "scene", "ns_per_triangle", "wrong_percent",
-                                   "wrong_pixels", "covered_pixels", "clipped", "outside",
-                                   "refused", "triangles"});
+        rl::ResultsTable clipping({"mode", "scene", "ns_per_triangle", "ns_min", "ns_max",
+                                   "wrong_percent", "wrong_pixels", "covered_pixels", "clipped",
+                                   "outside", "refused", "triangles"});
         for (const ClippingScene& s : clipping_scenes) {
             const rl::Grid<int> truth =
                 exact_ids(s.triangles, RayCamera(s.camera, clip_size, clip_size));
@@ -339,8 +353,9 @@ int main(int argc, char** argv) {
                 const IdDifference d = compare_ids(
                     truth, pipeline_ids(s.triangles, s.camera, clip_size, clip_size, o, &counts));
                 const double n = static_cast<double>(s.triangles.size());
+                const rl::lab::Timing& t = timings.at(clipping_name(s, m));
                 clipping.add_row(
-                    {std::string(name(m)), s.name, timings.at(clipping_name(s, m)).median_ns / n,
+                    {std::string(name(m)), s.name, t.median_ns / n, t.min_ns / n, t.max_ns / n,
                      100.0 * static_cast<double>(d.wrong) /
                          static_cast<double>(std::max(d.covered, 1L)),
                      static_cast<long long>(d.wrong), static_cast<long long>(d.covered),

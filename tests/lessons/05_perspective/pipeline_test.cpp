@@ -110,6 +110,21 @@ TEST(Pipeline, OnePassFillsTwoOutputs) {
     EXPECT_EQ(n.z, 1.0f);
 }
 
+// A frame loop reuses its target: clear() puts every attachment and the
+// depth back, so the second frame draws exactly what a new target would.
+TEST(Pipeline, AClearedTargetDrawsLikeANewOne) {
+    RenderTarget<rl::Rgba, rl::vec3> reused(16, 16, {}, rl::kBackground, rl::vec3{});
+    draw(square(-0.5f), Two{}, reused);  // nearer: without a depth clear it hides the next frame
+    reused.clear(rl::kBackground, rl::vec3{});
+    EXPECT_EQ(reused.colour<0>().at(0, 0), rl::kBackground);
+    EXPECT_EQ(reused.depth()->at(0, 0), reused.depth_state.clear);
+    draw(square(0.5f), Two{}, reused);
+    RenderTarget<rl::Rgba, rl::vec3> fresh(16, 16, {}, rl::kBackground, rl::vec3{});
+    draw(square(0.5f), Two{}, fresh);
+    EXPECT_EQ(reused.colour<1>().pixels(), fresh.colour<1>().pixels());
+    EXPECT_EQ(reused.depth()->pixels(), fresh.depth()->pixels());
+}
+
 struct Bright {
     using Varyings = float;
     ClipVertex<float> vertex(const ClipCorner& c) const {
