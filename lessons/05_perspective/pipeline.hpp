@@ -66,10 +66,15 @@ inline const char* name(Interpolation value) {
 
 // What a draw may change; the defaults are what the lessons teach, the rest
 // is for the lab to compare.
+// Faces dropped by their winding on screen: none, those facing away (the
+// default: a closed mesh's far side), or those facing the eye (lesson 08
+// renders a shadow map from the back faces).
+enum class Cull { none, back, front };
+
 struct PipelineOptions {
     ClipMode clip = ClipMode::guard_band;
     Interpolation interpolation = Interpolation::perspective_correct;
-    bool cull_back_faces = true;
+    Cull cull = Cull::back;  // which faces the culling step drops
     triangles::RasterMethod raster = triangles::RasterMethod::edge;  // lesson 02's three
     std::optional<triangles::PixelRect> tile;  // draw only these pixels (default: all)
     // The most samples one draw may visit, in whole targets: 1000 times every
@@ -91,13 +96,14 @@ struct OverdrawError : std::runtime_error {
 struct PipelineCounts {
     std::size_t objects_culled = 0;  // models skipped whole by their bounding box
     std::size_t faces = 0;           // faces that reached the vertex stage
-    std::size_t back_faces = 0;      // culled as facing away
-    std::size_t outside = 0;         // nothing left after clipping
-    std::size_t clipped = 0;         // cut by at least one plane
-    std::size_t drawn = 0;           // triangles rasterized (a clipped face may give several)
-    std::size_t refused = 0;         // refused by the rasterizer (beyond 2^22 pixels, NaN)
-    std::size_t visited = 0;         // samples of the triangles' boxes the rasterizer tested
-    std::size_t fragments = 0;       // samples that passed the depth test and were stored
+    std::size_t back_faces =
+        0;                    // culled by their winding (facing away, or with Cull::front towards)
+    std::size_t outside = 0;  // nothing left after clipping
+    std::size_t clipped = 0;  // cut by at least one plane
+    std::size_t drawn = 0;    // triangles rasterized (a clipped face may give several)
+    std::size_t refused = 0;  // refused by the rasterizer (beyond 2^22 pixels, NaN)
+    std::size_t visited = 0;  // samples of the triangles' boxes the rasterizer tested
+    std::size_t fragments = 0;  // samples that passed the depth test and were stored
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
 
@@ -405,9 +411,12 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
             program.vertex(geometry.corner(face, 2))};
         // 2. Back faces culled by the sign of det[x y w]. Not "culled unless
         // > 0": a face whose sign is NaN goes on, for the rasterizer to refuse.
-        if (options.cull_back_faces && facing(v[0].position, v[1].position, v[2].position) <= 0) {
-            ++counts.back_faces;
-            continue;
+        if (options.cull != Cull::none) {
+            const double area = facing(v[0].position, v[1].position, v[2].position);
+            if (options.cull == Cull::back ? area <= 0 : area >= 0) {
+                ++counts.back_faces;
+                continue;
+            }
         }
         // 3. Clipping: the face becomes a convex polygon, drawn as a fan.
         const ClipPolygon<V> polygon = clip_face(v, planes, counts);

@@ -75,16 +75,26 @@ T highlight(T alignment, T shininess) {
     return base > 0 || shininess == 0 ? std::pow(base, shininess) : T(0);
 }
 
+// What one light adds to a point (no ambient); nothing when it is behind
+// the surface. Lighting's colours and exponent are the material's.
+template <class T>
+Reflection<T> reflection_of(const Light<T>& light, const Lighting<T>& material, rl::Vec<3, T> n,
+                            rl::Vec<3, T> to_eye, Specular specular) {
+    const T n_dot_l = rl::dot(n, light.direction);
+    if (!(n_dot_l > 0)) return {};  // the light is behind the surface (or n is NaN)
+    const T s = alignment(n, light.direction, to_eye, n_dot_l, specular);
+    return {light.colour * n_dot_l,
+            light.colour * material.specular * highlight(s, material.shininess)};
+}
+
 template <class T>
 Reflection<T> reflection(const Lighting<T>& lighting, rl::Vec<3, T> n, rl::Vec<3, T> to_eye,
                          Specular specular) {
     Reflection<T> out{lighting.ambient, {}};
     for (const Light<T>& light : lighting.lights) {
-        const T n_dot_l = rl::dot(n, light.direction);
-        if (!(n_dot_l > 0)) continue;  // the light is behind the surface (or n is NaN)
-        const T s = alignment(n, light.direction, to_eye, n_dot_l, specular);
-        out.diffuse += light.colour * n_dot_l;
-        out.specular += light.colour * lighting.specular * highlight(s, lighting.shininess);
+        const Reflection<T> one = reflection_of(light, lighting, n, to_eye, specular);
+        out.diffuse += one.diffuse;
+        out.specular += one.specular;
     }
     return out;
 }

@@ -103,10 +103,17 @@ struct NormalMappedShader {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         const rl::vec3 n = normal_at(f, dx, dy);
-        const shading::Reflection<float> r =
-            shading::reflection(u.lighting, n, rl::normalize(u.eye - v.position), specular);
-        // The specular map scales the highlight; where the highlight is too
-        // dim to change any byte (under 10^-4 of the light), skip the lookup.
+        return surface_colour(
+            v, dx, dy,
+            shading::reflection(u.lighting, n, rl::normalize(u.eye - v.position), specular));
+    }
+
+    // The light reflected at a pixel, coloured by the surface's maps: the
+    // albedo times the diffuse part, the specular map times the highlight.
+    rl::vec3 surface_colour(const Varyings& v, rl::vec2 dx, rl::vec2 dy,
+                            const shading::Reflection<float>& r) const {
+        // Where the highlight is too dim to change any byte (under 10^-4 of
+        // the light), skip the specular map's lookup.
         const float peak = std::max({r.specular.x, r.specular.y, r.specular.z});
         const float shine = !maps.specular ? 1.0f
                             : peak < 1e-4f ? 0.0f
