@@ -37,6 +37,17 @@ void build_mip_levels(const std::vector<MappedModel>& models) {
     }
 }
 
+NormalMappedShader shader_for(const MappedModel& model, const shading::Placed& placed,
+                              const RenderOptions& options) {
+    return {placed.uniforms,
+            model.maps,
+            options.normal_map,
+            options.specular,
+            placed.surface.view.mirrored ? -1.0f : 1.0f,
+            &model.tangents,
+            options.filter};
+}
+
 // [doc:render-mapped]
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
                                    const perspective::Camera& camera, const RenderOptions& options,
@@ -52,14 +63,8 @@ perspective::PipelineCounts render(const std::vector<MappedModel>& models,
             shading::place(m.lit, view_projection, camera, options.lighting, sampler,
                            options.cull_objects, counts);
         if (!p) continue;
-        const NormalMappedShader shader{p->uniforms,
-                                        m.maps,
-                                        options.normal_map,
-                                        options.specular,
-                                        p->surface.view.mirrored ? -1.0f : 1.0f,
-                                        &m.tangents,
-                                        options.filter};
-        counts += shading::draw(p->surface, shader, frame, options.pipeline, options.output);
+        counts += shading::draw(p->surface, shader_for(m, *p, options), frame, options.pipeline,
+                                options.output);
     }
     return counts;
 }

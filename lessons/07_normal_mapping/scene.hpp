@@ -39,6 +39,11 @@ struct RenderOptions {
     shading::Output output = shading::Output::srgb;         // naive: the bytes lit as if linear
 };
 
+// The shader that draws a placed model with these options (later lessons
+// wrap it).
+NormalMappedShader shader_for(const MappedModel& model, const shading::Placed& placed,
+                              const RenderOptions& options);
+
 // Builds every texture's smaller mip levels now (they are built on first
 // use otherwise), so that a timed render of trilinear lookups times
 // rendering alone.

@@ -1,0 +1,72 @@
+// The light's view of the scene, for a shadow map: the matrix taking world
+// space to the map's clip space, fitted around the volume the map must
+// cover. Two kinds of light:
+//   directional  parallel rays along one direction (the sun): an
+//                orthographic projection along it;
+//   spot         rays from a point inside a cone: a perspective projection
+//                from the point, its field of view the cone's.
+// The covered volume is either the whole scene's box, or the part of it the
+// camera can see (the box around the view frustum, clipped to the scene's):
+// then the map's texels go where the picture needs them.
+// Derivations: docs/08_shadows.md#light-space.
+//
+//   const shadows::LightView light = shadows::light_view(
+//       {shadows::LightType::directional, {0.3f, 0.5f, 1.0f}}, scene_box);
+#pragma once
+
+#include "05_perspective/camera.hpp"
+#include "rasterlab/named_enum.hpp"
+
+namespace shadows {
+
+enum class LightType { directional, spot };
+inline constexpr std::array<rl::Named<LightType>, 2> kLightTypeNames = {
+    {{LightType::directional, "directional"}, {LightType::spot, "spot"}}};
+inline constexpr std::array<LightType, 2> kLightTypes = rl::values_of(kLightTypeNames);
+inline const char* name(LightType value) {
+    return rl::name_in(kLightTypeNames, value);
+}
+
+enum class Fit { scene, view };
+inline constexpr std::array<rl::Named<Fit>, 2> kFitNames = {
+    {{Fit::scene, "scene"}, {Fit::view, "view"}}};
+inline constexpr std::array<Fit, 2> kFits = rl::values_of(kFitNames);
+inline const char* name(Fit value) {
+    return rl::name_in(kFitNames, value);
+}
+
+struct ShadowLight {
+    LightType type = LightType::directional;
+    rl::vec3 direction{0.3f, 0.5f, 1.0f};  // towards the light, unit length
+    rl::vec3 position{0, 0, 0};            // spot: where the light is
+    float cone_degrees = 60;               // spot: the cone's full opening angle
+};
+
+// Where the map sits: the light's view and projection, and the size of one
+// map texel in world units at a point, which normal offsets scale by.
+struct LightView {
+    LightType type = LightType::directional;
+    rl::vec3 position, direction;  // the light's eye (spot) and its axis, pointing away from it
+    rl::mat4 view_projection;
+    float width = 0;           // directional: the map's side in world units
+    float tan_half_angle = 0;  // spot: half the map's side at unit distance
+    float texel_size(rl::vec3 world_point, int map_size) const;
+};
+
+// OpenGL's orthographic projection: the box [left, right] x [bottom, top] x
+// [-near, -far] of eye space to the cube [-1, 1]^3, w = 1.
+rl::mat4 orthographic(float left, float right, float bottom, float top, float near, float far);
+
+// The part of `scene` the camera can see: the box around the view
+// frustum's eight corners, clipped to the scene's box.
+perspective::Box visible_box(const perspective::Camera& camera, float aspect,
+                             const perspective::Box& scene);
+
+// The light's view fitted around `covered`: a directional light's
+// orthographic box holds all its corners; a spot light's frustum keeps its
+// cone and puts its near and far planes around them (near at least far /
+// 1000, so that a light inside the box keeps a usable depth range).
+// Throws std::invalid_argument for an empty box or a zero direction.
+LightView light_view(const ShadowLight& light, const perspective::Box& covered);
+
+}  // namespace shadows

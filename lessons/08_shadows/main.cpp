@@ -1,0 +1,149 @@
+// Lesson 08: shadows. Two passes: the scene's depth from the light into a
+// shadow map, then the scene from the camera with lesson 07's shading, the
+// key light scaled at every pixel by what the map lets through. Read
+// docs/08_shadows.md beside it.
+#include <chrono>
+#include <cstdio>
+
+#include "03_zbuffer/depth_picture.hpp"
+#include "05_perspective/view_cli.hpp"
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "scene.hpp"
+
+namespace {
+
+enum class Show { image, shadow_map };
+constexpr std::array<rl::Named<Show>, 2> kShowNames = {
+    {{Show::image, "image"}, {Show::shadow_map, "shadow-map"}}};
+const char* name(Show value) {
+    return rl::name_in(kShowNames, value);
+}
+
+enum class MapFaces { front, back };
+constexpr std::array<rl::Named<MapFaces>, 2> kMapFacesNames = {
+    {{MapFaces::front, "front"}, {MapFaces::back, "back"}}};
+const char* name(MapFaces value) {
+    return rl::name_in(kMapFacesNames, value);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Lesson 08, shadows: lesson 07's render with shadows from a shadow map, of a directional "
+        "or a spot light."};
+    rl::ImageOptions image_options{"08_shadows.tga"};
+    perspective::ViewOptions view;
+    shadows::ShadowOptions options;
+    normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
+    Show show = Show::image;
+    MapFaces map_faces = MapFaces::front;
+    std::vector<float> light_position;
+    // A light from the upper left, so that the shadows fall where the camera sees them.
+    view.light = {-0.7f, 1.0f, 0.4f};
+    perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
+    rl::add_image_options(app, image_options);
+    rl::add_method_option(app, "--light-type", options.light.type, shadows::kLightTypes,
+                          "The light that casts the shadows (--light: the direction towards it)");
+    app.add_option("--light-position", light_position,
+                   "Spot light: where it is, x y z (default: along --light, outside the scene)")
+        ->expected(3)
+        ->check(rl::finite_number());
+    app.add_option("--cone", options.light.cone_degrees,
+                   "Spot light: the cone's full opening angle, degrees (1 to 170)")
+        ->capture_default_str()
+        ->check(rl::finite_number(1, 170));
+    app.add_option(
+           "--shadow-map-size", options.map.size,
+           "Shadow map texels per side (1 to " + std::to_string(shadows::kMaxShadowMapSize) + ")")
+        ->capture_default_str();
+    app.add_option("--bias", options.map.constant_bias,
+                   "Constant depth bias added to the map (window depth, 0 to 0.1)")
+        ->capture_default_str()
+        ->check(rl::finite_number(0, 0.1));
+    app.add_option("--slope-bias", options.map.slope_bias,
+                   "Depth bias per unit of the triangle's depth slope in the map (0 to 100)")
+        ->capture_default_str()
+        ->check(rl::finite_number(0, 100));
+    app.add_option("--normal-offset", options.lookup.normal_offset,
+                   "Look up the map this many map texels along the surface normal (0 to 100)")
+        ->capture_default_str()
+        ->check(rl::finite_number(0, 100));
+    rl::add_method_option(app, "--filter", options.lookup.filter, shadows::kShadowFilters,
+                          "Shadow filter");
+    rl::add_method_option(app, "--fit", options.fit, shadows::kFits,
+                          "The light's frustum around the whole scene or what the camera sees");
+    rl::add_method_option(app, "--map-faces", map_faces, rl::values_of(kMapFacesNames),
+                          "Faces stored in the map: those facing the light, or those facing away");
+    rl::add_method_option(app, "--show", show, rl::values_of(kShowNames),
+                          "Write the image, or the shadow map's depth as a picture");
+    rl::add_method_option(app, "--normal-map", options.render.normal_map,
+                          normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
+    rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
+                          "Tangent frames of the --model files (lesson 07)");
+    rl::add_method_option(app, "--specular", options.render.specular, shading::kSpeculars,
+                          "The highlight, Phong's or Blinn's (lesson 06)");
+    rl::add_method_option(app, "--texture-filter", options.render.filter, textures::kFilters,
+                          "Texture filter, for every map (lesson 04)");
+    bool one_light = false;
+    app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
+    CLI11_PARSE(app, argc, argv);
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
+
+    return rl::guarded_main("08_shadows", [&] {
+        rl::check_image_output(output);
+        if (options.map.size < 1 || options.map.size > shadows::kMaxShadowMapSize)
+            throw std::invalid_argument("--shadow-map-size: " + std::to_string(options.map.size) +
+                                        " is outside 1 to " +
+                                        std::to_string(shadows::kMaxShadowMapSize) +
+                                        " (the cap: a map of 8192 x 8192 "
+                                        "floats takes 256 MiB)");
+        options.light.direction = rl::normalize(perspective::light_direction(view));
+        options.render.lighting = shading::default_lighting(options.light.direction);
+        if (one_light) options.render.lighting.lights.resize(1);
+        options.map.cull =
+            map_faces == MapFaces::front ? perspective::Cull::back : perspective::Cull::front;
+        std::vector<std::string> warnings;
+        std::vector<normal_mapping::MappedModel> models;
+        if (view.models.empty()) models = shadows::default_scene(warnings);
+        for (const std::string& path : view.models)  // as stored: the identity model matrix
+            models.push_back(
+                normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
+        rl::print_warnings("08_shadows", warnings);
+        const perspective::Box box = shadows::scene_box(models);
+        const float aspect = static_cast<float>(width) / static_cast<float>(height);
+        const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+        rl::print_warnings("08_shadows", {perspective::depth_precision_warning(camera)});
+        if (options.light.type == shadows::LightType::spot)
+            options.light.position =
+                light_position.empty()
+                    ? shadows::default_spot_position(box, options.light.direction)
+                    : rl::vec3{light_position[0], light_position[1], light_position[2]};
+
+        if (options.render.filter == textures::Filter::trilinear)
+            normal_mapping::build_mip_levels(models);
+        // [doc:lesson08-main]
+        const auto start = std::chrono::steady_clock::now();
+        const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, options);
+        const auto mapped = std::chrono::steady_clock::now();
+        perspective::ColourTarget frame = perspective::colour_target(width, height);
+        const perspective::PipelineCounts counts =
+            shadows::render(models, camera, options, map, frame);
+        const auto done = std::chrono::steady_clock::now();
+        rl::save_image(output,
+                       show == Show::image ? frame.colour() : zbuffer::depth_picture(map.depth));
+        // [/doc:lesson08-main]
+        const std::chrono::duration<double, std::milli> map_ms = mapped - start,
+                                                        frame_ms = done - mapped;
+        std::printf(
+            "%zu models: %zu faces, %zu fragments shaded; %s light, %dx%d shadow map (%s fit, %s "
+            "faces, %s filter) in %.1f ms, frame in %.1f ms; %s into %s\n",
+            models.size(), counts.faces, counts.fragments, shadows::name(options.light.type),
+            map.size(), map.size(), shadows::name(options.fit), name(map_faces),
+            shadows::name(options.lookup.filter), map_ms.count(), frame_ms.count(), name(show),
+            output.c_str());
+        return 0;
+    });
+}

@@ -1,0 +1,79 @@
+#include "scene.hpp"
+
+#include "rasterlab/transform.hpp"
+#include "shadowed_shader.hpp"
+
+namespace shadows {
+
+std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>& warnings) {
+    using normal_mapping::TangentMethod;
+    std::vector<normal_mapping::MappedModel> models =
+        normal_mapping::default_scene(TangentMethod::split, warnings);
+    // The torus (ring radius 0.62, tube 0.3, about z) turned to lie flat,
+    // scaled by 0.7, on the crate's top (y = 1.1): it overhangs the crate
+    // and shadows its top, its sides and the floor.
+    models.push_back(normal_mapping::load_mapped_model(
+        rl::project_model("torus"),
+        rl::compose({.translation = {0.85f, 1.1f + 0.7f * 0.3f, 0.35f},
+                     .rotation = rl::axis_angle({1, 0, 0}, 90),
+                     .scale = {0.7f, 0.7f, 0.7f}}),
+        TangentMethod::split, warnings));
+    return models;
+}
+
+perspective::Box scene_box(const std::vector<normal_mapping::MappedModel>& models) {
+    perspective::Box box;
+    for (const normal_mapping::MappedModel& m : models)
+        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
+    return box;
+}
+
+rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_light) {
+    return box.centre() + rl::normalize(towards_light) * rl::length(box.max - box.min);
+}
+
+ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
+                         const perspective::Camera& camera, float aspect,
+                         const ShadowOptions& options) {
+    const perspective::Box scene = scene_box(models);
+    perspective::Box covered =
+        options.fit == Fit::view ? visible_box(camera, aspect, scene) : scene;
+    if (covered.empty()) covered = scene;  // the camera sees none of it: any map will do
+    if (scene.empty()) {                   // no geometry at all: a map with nothing in it
+        covered.add(rl::vec3{-1, -1, -1});
+        covered.add(rl::vec3{1, 1, 1});
+    }
+    return render_shadow_map(models, light_view(options.light, covered), options.map);
+}
+
+// [doc:render-shadowed]
+perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                   const perspective::Camera& camera, const ShadowOptions& options,
+                                   const ShadowMap& map, perspective::ColourTarget& frame) {
+    const normal_mapping::RenderOptions& r = options.render;
+    const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
+    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    textures::SamplerState sampler;
+    sampler.filter = r.filter;
+    sampler.encoding = r.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr;
+    // The key light, tested against the map, and the rest, which are not.
+    shading::Lighting<float> rest = r.lighting;
+    shading::Light<float> key{rl::normalize(options.light.direction), {0, 0, 0}};
+    if (!rest.lights.empty()) {
+        key.colour = rest.lights.front().colour;
+        rest.lights.erase(rest.lights.begin());
+    }
+    perspective::PipelineCounts counts;
+    for (const normal_mapping::MappedModel& m : models) {
+        const std::optional<shading::Placed> p = shading::place(
+            m.lit, view_projection, camera, r.lighting, sampler, r.cull_objects, counts);
+        if (!p) continue;
+        const ShadowedShader shader{normal_mapping::shader_for(m, *p, r), map, options.lookup, key,
+                                    options.light.cone_degrees,           rest};
+        counts += shading::draw(p->surface, shader, frame, r.pipeline, r.output);
+    }
+    return counts;
+}
+// [/doc:render-shadowed]
+
+}  // namespace shadows

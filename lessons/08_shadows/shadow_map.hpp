@@ -1,0 +1,38 @@
+// The first pass: the scene's depth as the light sees it, into a
+// depth-only render target (lesson 05's pipeline with no colour attachment,
+// so no fragment stage runs). Each texel holds the window depth of the
+// nearest surface along its ray from the light. The depth bias moves the
+// stored depths away from the light while they are written, as
+// glPolygonOffset does: a constant, and a multiple of the triangle's depth
+// slope. Derivations: docs/08_shadows.md#the-shadow-map.
+//
+//   const shadows::ShadowMap map =
+//       shadows::render_shadow_map(models, light_view, {.size = 1024, .slope_bias = 1});
+#pragma once
+
+#include "07_normal_mapping/scene.hpp"
+#include "light_space.hpp"
+
+namespace shadows {
+
+// The largest map a program draws: 8192 x 8192 floats, 256 MiB.
+inline constexpr int kMaxShadowMapSize = 8192;
+
+struct ShadowMapOptions {
+    int size = 1024;          // texels per side
+    float constant_bias = 0;  // added to every stored depth (window depth, 0..1)
+    float slope_bias = 1;     // times the triangle's depth change per texel
+    perspective::Cull cull = perspective::Cull::back;  // front: store the faces turned away
+};
+
+struct ShadowMap {
+    LightView light;
+    rl::FloatImage depth;  // window depth from the light; 1 where nothing is
+    int size() const { return depth.width(); }
+};
+
+// Throws std::invalid_argument for a size outside 1..kMaxShadowMapSize.
+ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& models,
+                            const LightView& light, const ShadowMapOptions& options);
+
+}  // namespace shadows
