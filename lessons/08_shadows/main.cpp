@@ -40,8 +40,9 @@ int main(int argc, char** argv) {
     Show show = Show::image;
     MapFaces map_faces = MapFaces::front;
     std::vector<float> light_position;
-    // A light from the upper left, so that the shadows fall where the camera sees them.
-    view.light = {-0.7f, 1.0f, 0.4f};
+    // A light from the right, in front: the crate and the torus shadow the
+    // globe, and all three the floor, where the camera sees it.
+    view.light = {1.0f, 0.6f, 0.6f};
     perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--light-type", options.light.type, shadows::kLightTypes,

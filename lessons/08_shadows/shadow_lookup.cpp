@@ -29,9 +29,13 @@ float lit_by_texel(const ShadowMap& map, int x, int y, float depth) {
 // [doc:visibility]
 float visibility(const ShadowMap& map, rl::vec3 world_point, rl::vec3 normal,
                  const ShadowLookup& lookup) {
+    // A kernel reaching two texels away compares depths two texels across
+    // the surface's slope: it needs twice the offset of one reaching one.
+    const float reach =
+        lookup.filter == ShadowFilter::pcf5 || lookup.filter == ShadowFilter::poisson ? 2.0f : 1.0f;
     if (lookup.normal_offset != 0)
         world_point +=
-            normal * (lookup.normal_offset * map.light.texel_size(world_point, map.size()));
+            normal * (lookup.normal_offset * reach * map.light.texel_size(world_point, map.size()));
     const MapPoint p = to_map(map, world_point);
     if (!p.inside) return 1.0f;
     const int x = static_cast<int>(std::floor(p.u)), y = static_cast<int>(std::floor(p.v));

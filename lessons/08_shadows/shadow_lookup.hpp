@@ -30,7 +30,8 @@ inline const char* name(ShadowFilter value) {
 
 struct ShadowLookup {
     ShadowFilter filter = ShadowFilter::pcf3;
-    float normal_offset = 1;  // along the normal, in map texels at the point
+    float normal_offset = 1;  // along the normal, in map texels at the point (twice that for
+                              // pcf5 and poisson, which reach two texels away)
 };
 
 // Where a world point lands in the map: texel coordinates (0..size across

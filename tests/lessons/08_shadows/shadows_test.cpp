@@ -1,10 +1,60 @@
+// Lesson 08's stability cases and pitfalls: the light's view, the shadow
+// map's bias, the lookup's filters, and the edge cases of the issue (a
+// grazing light, a light inside the scene, an empty scene, a caster thinner
+// than a texel, a caster touching its receiver).
 #include <gtest/gtest.h>
 
-#include "08_shadows/light_space.hpp"
+#include <cmath>
+
+#include "08_shadows/scene.hpp"
+#include "rasterlab/transform.hpp"
 
 namespace {
 
 using namespace shadows;
+using normal_mapping::MappedModel;
+
+MappedModel model(const char* name, const rl::Trs& trs) {
+    std::vector<std::string> warnings;
+    return normal_mapping::load_mapped_model(rl::project_model(name), rl::compose(trs),
+                                             normal_mapping::TangentMethod::split, warnings);
+}
+
+// The floor (the square [-s, s]^2 of y = 0), and optionally the crate
+// standing on it at the origin (edge 1.1).
+std::vector<MappedModel> floor_scene(bool with_crate, float scale = 3) {
+    std::vector<MappedModel> models;
+    models.push_back(model("floor", {.scale = {scale, scale, scale}}));
+    if (with_crate) models.push_back(model("crate", {.translation = {0, 0.55f, 0}}));
+    return models;
+}
+
+ShadowMap map_of(const std::vector<MappedModel>& models, rl::vec3 towards_light,
+                 const ShadowMapOptions& options) {
+    const ShadowLight light{LightType::directional, rl::normalize(towards_light)};
+    return render_shadow_map(models, light_view(light, scene_box(models)), options);
+}
+
+// The share of a grid of floor points (|x|, |z| <= extent, y = 0, normal +y)
+// that the map shadows, and the mean light that reaches them.
+struct FloorShadow {
+    double shadowed = 0, mean_light = 0;
+};
+FloorShadow floor_shadow(const ShadowMap& map, const ShadowLookup& lookup, float x0, float x1,
+                         float z0, float z1) {
+    FloorShadow out;
+    const int n = 60;
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const rl::vec3 p{x0 + (x1 - x0) * (i + 0.37f) / n, 0, z0 + (z1 - z0) * (j + 0.61f) / n};
+            const float lit = visibility(map, p, {0, 1, 0}, lookup);
+            out.shadowed += lit < 1;
+            out.mean_light += lit;
+        }
+    out.shadowed /= n * n;
+    out.mean_light /= n * n;
+    return out;
+}
 
 // The orthographic projection sends its box's corners to the NDC cube's.
 TEST(ShadowsTest, OrthographicSendsItsBoxToTheCube) {
@@ -17,6 +67,152 @@ TEST(ShadowsTest, OrthographicSendsItsBoxToTheCube) {
     EXPECT_NEAR(high.y, 1, 1e-6f);
     EXPECT_NEAR(high.z, 1, 1e-6f);
     EXPECT_EQ(low.w, 1.0f);
+}
+
+// Every corner of the covered box lands inside the light's clip volume.
+TEST(ShadowsTest, TheLightsViewHoldsTheWholeBox) {
+    perspective::Box box;
+    box.add(rl::vec3{-1, 0, -2});
+    box.add(rl::vec3{3, 1, 2});
+    for (const ShadowLight& light :
+         {ShadowLight{LightType::directional, rl::normalize(rl::vec3{-0.7f, 1, 0.4f})},
+          ShadowLight{LightType::directional, {0, 1, 0}},  // straight down: up must change
+          ShadowLight{LightType::spot, rl::normalize(rl::vec3{1, 2, 1}), {4, 6, 3}, 90}}) {
+        const LightView view = light_view(light, box);
+        for (int i = 0; i < 8; ++i) {
+            const rl::vec4 c = view.view_projection * rl::extend(box.corner(i), 1.0f);
+            ASSERT_GT(c.w, 0) << name(light.type);
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_LE(std::abs(c[static_cast<std::size_t>(k)] / c.w), 1.0001f)
+                    << name(light.type) << " corner " << i << " axis " << k;
+            }
+        }
+    }
+}
+
+// Pitfall: shadow acne. Without any bias a lit surface shadows itself in
+// stripes: its depth between two texel centres differs from what the map
+// stored at the centre by up to half a texel times its slope. The slope
+// bias and the normal offset remove it, at the light's grazing angle too.
+TEST(ShadowsTest, WithoutBiasALitFloorShadowsItself) {
+    const std::vector<MappedModel> floor = floor_scene(false);
+    for (const rl::vec3 light : {rl::vec3{1, 1, 0}, rl::vec3{1, 0.15f, 0.2f}}) {
+        const ShadowMap bare = map_of(floor, light, {.size = 256, .slope_bias = 0});
+        const FloorShadow acne =
+            floor_shadow(bare, {ShadowFilter::hard, 0}, -2.5f, 2.5f, -2.5f, 2.5f);
+        EXPECT_GT(acne.shadowed, 0.2) << light;
+        const ShadowMap biased = map_of(floor, light, {.size = 256});
+        const FloorShadow fixed = floor_shadow(biased, {}, -2.5f, 2.5f, -2.5f, 2.5f);
+        EXPECT_EQ(fixed.shadowed, 0) << light;
+    }
+}
+
+// Pitfall: peter-panning. A constant bias large enough to hide any acne
+// also lifts the shadow off a caster close to its receiver: a plate 0.1
+// above the floor casts no shadow at all with a bias of 0.05 (a quarter of
+// a world unit of depth here).
+TEST(ShadowsTest, TooMuchBiasDetachesTheShadowFromItsCaster) {
+    std::vector<MappedModel> scene = floor_scene(false);
+    scene.push_back(model("floor", {.translation = {0, 0.1f, 0}, .scale = {0.5f, 0.5f, 0.5f}}));
+    const rl::vec3 light{-1, 1, 0};  // the plate's shadow falls on x in [-0.4, 0.6]
+    const ShadowMap right = map_of(scene, light, {.size = 512});
+    const ShadowMap lifted = map_of(scene, light, {.size = 512, .constant_bias = 0.05f});
+    EXPECT_EQ(floor_shadow(right, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 0.0);
+    EXPECT_EQ(floor_shadow(lifted, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 1.0);
+}
+
+// A map made by hand: identity light matrix (the cube [-1, 1]^3 is the
+// light's clip space), 2 x 2 texels, the left column near (0.2), the right
+// far (0.9).
+ShadowMap two_by_two() {
+    ShadowMap map;
+    map.light.view_projection = rl::mat4::identity();
+    map.light.width = 2;
+    map.depth = rl::FloatImage(2, 2, 0.9f);
+    map.depth.at(0, 0) = map.depth.at(0, 1) = 0.2f;
+    return map;
+}
+
+// Pitfall: filter the comparisons, not the depths. Between a near texel
+// (0.2) and a far one (0.9), a point at depth 0.5 is shadowed by the first
+// and lit by the second: half lit. The depths' average, 0.55, would call it
+// wholly lit.
+TEST(ShadowsTest, PercentageCloserFilteringAveragesTheAnswersNotTheDepths) {
+    const ShadowMap map = two_by_two();
+    // World (0, 0, 0): NDC z 0 is window depth 0.5; u = v = 1, between the texels.
+    EXPECT_NEAR(visibility(map, {0, 0, 0}, {0, 0, 1}, {ShadowFilter::pcf2, 0}), 0.5f, 1e-6f);
+    EXPECT_EQ(visibility(map, {-0.5f, 0, 0}, {0, 0, 1}, {ShadowFilter::hard, 0}), 0.0f);
+    EXPECT_EQ(visibility(map, {0.5f, 0, 0}, {0, 0, 1}, {ShadowFilter::hard, 0}), 1.0f);
+}
+
+// Outside the map, past its far plane, and behind a spot light nothing is in shadow.
+TEST(ShadowsTest, PointsTheMapDoesNotCoverAreLit) {
+    ShadowMap map = two_by_two();
+    map.depth = rl::FloatImage(2, 2, 0.0f);  // everything shadowed where the map reaches
+    EXPECT_EQ(visibility(map, {3, 0, 0}, {0, 0, 1}, {ShadowFilter::pcf5, 0}), 1.0f);
+    EXPECT_EQ(visibility(map, {0, 0, 2}, {0, 0, 1}, {ShadowFilter::hard, 0}), 1.0f);  // beyond far
+    EXPECT_EQ(visibility(map, {-0.5f, 0, 0}, {0, 0, 1}, {ShadowFilter::hard, 0}), 0.0f);
+    map.light.view_projection = rl::perspective(90, 1, 0.1f, 10);  // a spot at the origin, down -z
+    map.light.type = LightType::spot;
+    EXPECT_EQ(visibility(map, {0, 0, 1}, {0, 0, 1}, {ShadowFilter::hard, 0}), 1.0f);  // behind it
+}
+
+// Every filter is lit in the open and shadowed deep under the crate's shadow.
+TEST(ShadowsTest, EveryFilterAgreesAwayFromShadowEdges) {
+    const std::vector<MappedModel> scene = floor_scene(true);
+    const ShadowMap map = map_of(scene, {-1, 1, 0}, {.size = 512});
+    for (ShadowFilter filter : kShadowFilters) {
+        EXPECT_EQ(floor_shadow(map, {filter, 1}, -2.5f, -1.0f, -2.5f, 2.5f).mean_light, 1.0)
+            << name(filter);
+        EXPECT_EQ(floor_shadow(map, {filter, 1}, 0.8f, 1.3f, -0.3f, 0.3f).mean_light, 0.0)
+            << name(filter);
+    }
+}
+
+// A spot light inside the scene's box still gets a depth range and a map.
+TEST(ShadowsTest, ASpotLightInsideTheSceneStillCastsShadows) {
+    const std::vector<MappedModel> scene = floor_scene(true);
+    ShadowLight spot{LightType::spot, rl::normalize(rl::vec3{-1, 1, 0}), {-1.5f, 1.5f, 0}, 120};
+    const ShadowMap map =
+        render_shadow_map(scene, light_view(spot, scene_box(scene)), {.size = 256});
+    // The crate shadows the floor behind it, away from the light.
+    EXPECT_LT(floor_shadow(map, {}, 0.9f, 1.2f, -0.2f, 0.2f).mean_light, 0.05);
+    EXPECT_EQ(floor_shadow(map, {}, -2.5f, -2.0f, -0.5f, 0.5f).mean_light, 1.0);
+}
+
+// An empty scene renders (its map holds nothing), and a zero light direction is refused.
+TEST(ShadowsTest, AnEmptySceneHasAnEmptyMapAndAZeroLightIsRefused) {
+    const std::vector<MappedModel> none;
+    perspective::Camera camera;
+    ShadowOptions options;
+    const ShadowMap map = shadow_map_for(none, camera, 1, options);
+    for (float d : map.depth.pixels()) ASSERT_EQ(d, 1.0f);
+    perspective::ColourTarget frame = perspective::colour_target(16, 16);
+    EXPECT_EQ(render(none, camera, options, map, frame).fragments, 0u);
+    perspective::Box box;
+    box.add(rl::vec3{0, 0, 0});
+    EXPECT_THROW(light_view({LightType::directional, {0, 0, 0}}, box), std::invalid_argument);
+    EXPECT_THROW(render_shadow_map(none, light_view({}, box), {.size = 0}), std::invalid_argument);
+    EXPECT_THROW(render_shadow_map(none, light_view({}, box), {.size = kMaxShadowMapSize + 1}),
+                 std::invalid_argument);
+}
+
+// Fitting to the view gives the map a smaller box than the scene's when the
+// camera sees part of it, and never a larger one.
+TEST(ShadowsTest, FittingToTheViewCoversNoMoreThanTheScene) {
+    perspective::Box scene;
+    scene.add(rl::vec3{-10, 0, -10});
+    scene.add(rl::vec3{10, 1, 10});
+    perspective::Camera camera;
+    camera.eye = {0, 1, 8};
+    camera.target = {0, 0, 5};
+    camera.near = 0.1f;
+    camera.far = 6;
+    const perspective::Box seen = visible_box(camera, 1, scene);
+    ASSERT_FALSE(seen.empty());
+    EXPECT_GE(seen.min.x, scene.min.x);
+    EXPECT_LE(seen.max.z, scene.max.z);
+    EXPECT_LT(seen.max.x - seen.min.x, scene.max.x - scene.min.x);
 }
 
 }  // namespace
