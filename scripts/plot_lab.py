@@ -149,7 +149,7 @@ def scale_axes(axes, options, rows):
         axes.set_xticklabels([f"{v:g}" for v in values])
         axes.minorticks_off()
     if options.logy:
-        ys = [number(r[options.y]) for r in rows]
+        ys = [number(r[y]) for r in rows for y in options.y.split(",")]
         positive = [y for y in ys if y and y > 0]
         if any(y == 0 for y in ys):
             # Zero is a result here (an exact method): a linear stretch near 0, log above.
@@ -173,25 +173,32 @@ def scale_axes(axes, options, rows):
 
 
 def draw_lines(plt, rows, options):
-    """One line per series value (colour), and per style value (dash pattern)."""
+    """One line per series value (colour), and per style value or y column
+    (dash pattern): --y a,b draws each column as its own line."""
     figure, axes = plt.subplots(figsize=(7.5, 5))
-    series = list(dict.fromkeys(r[options.series] for r in rows))
+    series = list(dict.fromkeys(r[options.series] for r in rows)) if options.series else [None]
+    y_columns = options.y.split(",")
+    if options.style and len(y_columns) > 1:
+        sys.exit("--style and several --y columns both set the dash pattern: choose one")
     styles = list(dict.fromkeys(r[options.style] for r in rows)) if options.style else [None]
     dashes = ["-", (0, (6, 3)), ":", "-."]
     flat = []  # lines that are zero everywhere: named in a note, not drawn on top of each other
     for i, name in enumerate(series):
-        for j, style in enumerate(styles):
-            members = [r for r in rows if r[options.series] == name and (style is None or r[options.style] == style)]
-            points = sorted((number(r[options.x]), number(r[options.y])) for r in members)
-            label = name if style is None else f"{name}, {style}"
+        for j, (style, y) in enumerate((s, y) for s in styles for y in y_columns):
+            members = [r for r in rows if (name is None or r[options.series] == name)
+                       and (style is None or r[options.style] == style)]
+            points = sorted((number(r[options.x]), number(r[y])) for r in members)
+            parts = [p for p in (name, style, y if len(y_columns) > 1 else None) if p is not None]
+            label = ", ".join(parts) or y
             if points and all(p[1] == 0 for p in points):
                 flat.append(label)
                 continue
             axes.plot([p[0] for p in points], [p[1] for p in points], linestyle=dashes[j % len(dashes)],
-                      color=f"C{i}", marker="o", markersize=3, label=label)
+                      color=f"C{i}" if len(series) > 1 or len(y_columns) == 1 else f"C{j}",
+                      marker="o", markersize=3, label=label)
             if options.point_labels:  # each point named by its value of that column (e.g. segments)
                 for r in members:
-                    axes.annotate(r[options.point_labels], (number(r[options.x]), number(r[options.y])),
+                    axes.annotate(r[options.point_labels], (number(r[options.x]), number(r[y])),
                                   textcoords="offset points", xytext=(3, 3), fontsize=6, color=f"C{i}")
     axes.set_title(options.title, fontsize=10)
     axes.legend(fontsize=7, ncol=2, handlelength=4)  # long enough handles to show the dashes
@@ -280,12 +287,15 @@ def main():
     with options.csv.open() as f:
         all_rows = list(csv.DictReader(f))
     rows = all_rows
-    for condition in options.where:
+    for condition in options.where:  # COLUMN=VALUE, or COLUMN!=VALUE to leave those rows out
         column, _, value = condition.partition("=")
-        rows = [r for r in rows if r.get(column) == value]
+        if column.endswith("!"):
+            rows = [r for r in rows if r.get(column[:-1]) != value]
+        else:
+            rows = [r for r in rows if r.get(column) == value]
     if not rows:
         sys.exit(f"{options.csv}: no rows" + (f" with {', '.join(options.where)}" if options.where else ""))
-    if options.series:
+    if options.series or "," in options.y:
         draw_lines(plt, rows, options)
         return
     if not options.label:

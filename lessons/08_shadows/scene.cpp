@@ -1,7 +1,6 @@
 #include "scene.hpp"
 
 #include "rasterlab/transform.hpp"
-#include "shadowed_shader.hpp"
 
 namespace shadows {
 
@@ -46,33 +45,25 @@ ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
     return render_shadow_map(models, light_view(options.light, covered), options.map);
 }
 
+SplitLighting split_lighting(const ShadowOptions& options) {
+    SplitLighting out{{rl::normalize(options.light.direction), {0, 0, 0}}, options.render.lighting};
+    if (!out.rest.lights.empty()) {
+        out.key.colour = out.rest.lights.front().colour;
+        out.rest.lights.erase(out.rest.lights.begin());
+    }
+    return out;
+}
+
 // [doc:render-shadowed]
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
                                    const perspective::Camera& camera, const ShadowOptions& options,
                                    const ShadowMap& map, perspective::ColourTarget& frame) {
-    const normal_mapping::RenderOptions& r = options.render;
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
-    textures::SamplerState sampler;
-    sampler.filter = r.filter;
-    sampler.encoding = r.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr;
-    // The key light, tested against the map, and the rest, which are not.
-    shading::Lighting<float> rest = r.lighting;
-    shading::Light<float> key{rl::normalize(options.light.direction), {0, 0, 0}};
-    if (!rest.lights.empty()) {
-        key.colour = rest.lights.front().colour;
-        rest.lights.erase(rest.lights.begin());
-    }
-    perspective::PipelineCounts counts;
-    for (const normal_mapping::MappedModel& m : models) {
-        const std::optional<shading::Placed> p = shading::place(
-            m.lit, view_projection, camera, r.lighting, sampler, r.cull_objects, counts);
-        if (!p) continue;
-        const ShadowedShader shader{normal_mapping::shader_for(m, *p, r), map, options.lookup, key,
-                                    options.light.cone_degrees,           rest};
-        counts += shading::draw(p->surface, shader, frame, r.pipeline, r.output);
-    }
-    return counts;
+    return draw_shadowed(models, camera, aspect, options, map,
+                         [&](const shading::Surface& surface, const ShadowedShader& shader) {
+                             return shading::draw(surface, shader, frame, options.render.pipeline,
+                                                  options.render.output);
+                         });
 }
 // [/doc:render-shadowed]
 

@@ -7,7 +7,7 @@
 //   shadows::render(models, camera, options, map, frame);
 #pragma once
 
-#include "shadow_lookup.hpp"
+#include "shadowed_shader.hpp"
 
 namespace shadows {
 
@@ -34,6 +34,39 @@ rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_lig
 ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
                          const perspective::Camera& camera, float aspect,
                          const ShadowOptions& options);
+
+// The key light, tested against the map (the options' first light, from
+// the shadow light's direction), and the others with the ambient term.
+struct SplitLighting {
+    shading::Light<float> key;
+    shading::Lighting<float> rest;
+};
+SplitLighting split_lighting(const ShadowOptions& options);
+
+// Each model of the second pass, placed and given its shader, handed to
+// draw(surface, shader), which returns the counts of its draw.
+template <class Draw>
+perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::MappedModel>& models,
+                                          const perspective::Camera& camera, float aspect,
+                                          const ShadowOptions& options, const ShadowMap& map,
+                                          Draw&& draw) {
+    const normal_mapping::RenderOptions& r = options.render;
+    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    textures::SamplerState sampler;
+    sampler.filter = r.filter;
+    sampler.encoding = r.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr;
+    const SplitLighting lights = split_lighting(options);
+    perspective::PipelineCounts counts;
+    for (const normal_mapping::MappedModel& m : models) {
+        const std::optional<shading::Placed> p = shading::place(
+            m.lit, view_projection, camera, r.lighting, sampler, r.cull_objects, counts);
+        if (!p) continue;
+        counts += draw(p->surface,
+                       ShadowedShader{normal_mapping::shader_for(m, *p, r), map, options.lookup,
+                                      lights.key, options.light.cone_degrees, lights.rest});
+    }
+    return counts;
+}
 
 // The second pass, into the frame.
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,

@@ -40,6 +40,12 @@ struct ShadowedShader {
         return surface.vertex(in);
     }
 
+    // The map's answer at a pixel, 0 to 1. The offset goes along the
+    // interpolated surface normal: the mapped one follows the relief.
+    float light_reaching(const Varyings& v) const {
+        return visibility(map, v.position, rl::normalize(v.normal), lookup);
+    }
+
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
@@ -52,8 +58,7 @@ struct ShadowedShader {
             light.colour = light.colour * cone_factor(map.light, cone_degrees, -light.direction);
         }
         if (light.colour.x > 0 || light.colour.y > 0 || light.colour.z > 0) {
-            // The geometric normal for the offset: the mapped one follows the relief.
-            const float lit = visibility(map, v.position, rl::normalize(v.normal), lookup);
+            const float lit = light_reaching(v);
             if (lit > 0) {
                 const shading::Reflection<float> direct =
                     shading::reflection_of(light, surface.u.lighting, n, to_eye, surface.specular);

@@ -1,0 +1,122 @@
+#include "visibility_truth.hpp"
+
+#include <cmath>
+
+namespace shadows {
+
+std::vector<perspective::WorldTriangle> world_triangles(
+    const std::vector<normal_mapping::MappedModel>& models) {
+    std::vector<perspective::WorldTriangle> out;
+    for (const normal_mapping::MappedModel& m : models) {
+        const rl::Mesh& mesh = m.lit.model.mesh;
+        const rl::dmat4 transform = rl::cast<double>(m.lit.model.transform);
+        for (const rl::Face& face : mesh.faces) {
+            perspective::WorldTriangle t{};
+            for (int k = 0; k < 3; ++k)
+                t.p[k] =
+                    (transform * rl::extend(rl::cast<double>(mesh.position(face, k)), 1.0)).xyz();
+            out.push_back(t);
+        }
+    }
+    return out;
+}
+
+SceneRays::SceneRays(const std::vector<normal_mapping::MappedModel>& models)
+    : bvh_(world_triangles(models)) {
+    const perspective::Box box = scene_box(models);
+    scale_ = box.empty() ? 1 : std::max(static_cast<double>(rl::length(box.max - box.min)), 1e-30);
+}
+
+// [doc:visibility-truth]
+TruthFrame SceneRays::truth(const perspective::Camera& camera, int width, int height,
+                            const LightView& light, float cone_degrees) const {
+    TruthFrame out{rl::Grid<int>(width, height, -1), rl::FloatImage(width, height, NAN)};
+    const perspective::RayCamera rays(camera, width, height);
+    const rl::dvec3 towards = -rl::normalize(rl::cast<double>(light.direction));
+    const rl::dvec3 spot = rl::cast<double>(light.position);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const rl::dvec3 d = rays.direction(x + 0.5, y + 0.5);  // t along it is view depth
+            const RayHit hit = bvh_.nearest(rays.eye(), d, rays.near(), rays.far());
+            if (hit.triangle < 0) continue;
+            out.triangle.at(x, y) = hit.triangle;
+            const perspective::WorldTriangle& t =
+                bvh_.triangles()[static_cast<std::size_t>(hit.triangle)];
+            rl::dvec3 normal = rl::normalize(rl::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+            if (rl::dot(normal, d) > 0) normal = -normal;  // the side the eye sees
+            const rl::dvec3 point = rays.eye() + d * hit.t;
+            const rl::dvec3 to_light =
+                light.type == LightType::directional ? towards : spot - point;
+            if (!(rl::dot(normal, to_light) > 0)) continue;  // faces away: no direct light
+            if (light.type == LightType::spot &&
+                !(cone_factor(light, cone_degrees, rl::cast<float>(-to_light)) > 0))
+                continue;  // outside the spot's cone: no direct light either
+            // Off the surface by a billionth of the scene, so that the ray
+            // does not meet the triangle it starts on.
+            const rl::dvec3 origin = point + normal * (scale_ * 1e-9);
+            const double t_max = light.type == LightType::directional ? HUGE_VAL : 1.0;
+            out.lit.at(x, y) = bvh_.any(origin, to_light, 0, t_max) ? 0.0f : 1.0f;
+        }
+    return out;
+}
+// [/doc:visibility-truth]
+
+namespace {
+
+// The probe: the second pass's shader, writing its map answer and the
+// shaded triangle's number instead of a colour.
+struct ProbeShader {
+    ShadowedShader shaded;
+    int first_triangle;  // the model's first triangle in world_triangles()' numbering
+    using Varyings = ShadowedShader::Varyings;
+    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+        return shaded.vertex(in);
+    }
+    std::tuple<float, int> fragment(const perspective::Fragment<Varyings>& f) const {
+        return {shaded.light_reaching(f.varyings), first_triangle + f.face()};
+    }
+};
+
+}  // namespace
+
+ProbeFrame probe(const std::vector<normal_mapping::MappedModel>& models,
+                 const perspective::Camera& camera, int width, int height,
+                 const ShadowOptions& options, const ShadowMap& map) {
+    perspective::RenderTarget<float, int> target(width, height, {}, NAN, -1);
+    int first = 0;
+    std::size_t model = 0;
+    draw_shadowed(
+        models, camera, static_cast<float>(width) / static_cast<float>(height), options, map,
+        [&](const shading::Surface& surface, const ShadowedShader& shader) {
+            // draw_shadowed skips models it culls: find this one's place in the numbering.
+            while (model < models.size() && &models[model].lit.model.mesh != surface.view.mesh) {
+                first += static_cast<int>(models[model].lit.model.mesh.faces.size());
+                ++model;
+            }
+            return perspective::draw(surface, ProbeShader{shader, first}, target,
+                                     options.render.pipeline);
+        });
+    return {std::move(target.colour<0>()), std::move(target.colour<1>())};
+}
+
+ShadowError compare(const TruthFrame& truth, const ProbeFrame& probe) {
+    ShadowError e;
+    for (int y = 0; y < truth.lit.height(); ++y)
+        for (int x = 0; x < truth.lit.width(); ++x) {
+            const float want = truth.lit.at(x, y), got = probe.lit.at(x, y);
+            if (std::isnan(want) || truth.triangle.at(x, y) != probe.triangle.at(x, y)) continue;
+            ++e.scored;
+            e.wrongly_lit += want == 0 && got >= 0.5f;
+            e.wrongly_shadowed += want == 1 && got < 0.5f;
+            e.mean_error += std::abs(got - want);
+        }
+    if (e.scored > 0) {
+        const double n = static_cast<double>(e.scored);
+        e.wrongly_lit /= n;
+        e.wrongly_shadowed /= n;
+        e.mean_error /= n;
+    }
+    return e;
+}
+
+}  // namespace shadows
