@@ -18,6 +18,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   06_normal_matrix.svg       a circle squashed by M: the normal carried by M, and by M^-T
   07_mirrored_seam.svg       a seam where the texture is mirrored: the two frames it needs
   07_tbn_frame.svg           a triangle in the texture and on the surface, with T and B
+  08_two_passes.svg          the light's box and its map, the camera's frustum, a point in shadow
+  08_acne.svg                a tilted surface against the map's stored depths: acne, and the bias
 """
 import math
 import pathlib
@@ -577,13 +579,110 @@ def tbn_frame(out):
     save(figure, out, "07_tbn_frame.svg")
 
 
+def two_passes(out):
+    # Side view. A directional light from the upper right: its orthographic
+    # box is a rectangle along its direction; the map is the box's near side,
+    # cut into texels. A floor, a box-shaped caster on it, the camera's frustum
+    # from the left. Point P on the floor: its ray to the light meets the
+    # caster first, so the texel stores the caster's depth, nearer than P's.
+    figure, axes = plt.subplots(figsize=(7.2, 4.6))
+    light = (math.cos(math.radians(55)), math.sin(math.radians(55)))  # towards the light
+    across = (-light[1], light[0])
+    axes.plot([-3.2, 3.4], [0, 0], color=INK, lw=1.5)
+    axes.add_patch(Rectangle((-0.3, 0), 0.9, 0.9, color="#c08040", alpha=0.8))
+    axes.text(0.15, 0.4, "caster", ha="center", fontsize=8, color="white")
+    # The light's box: centred on the scene, 5 wide across the light, 5 deep.
+    centre = (0.2, 0.5)
+    half_w, half_d = 2.6, 2.6
+    corners = []
+    for sw, sd in ((-1, -1), (1, -1), (1, 1), (-1, 1)):
+        corners.append((centre[0] + across[0] * sw * half_w + light[0] * sd * half_d,
+                        centre[1] + across[1] * sw * half_w + light[1] * sd * half_d))
+    axes.add_patch(Polygon(corners, closed=True, fill=False, ec=ACCENT, lw=1, ls="--"))
+    near = [corners[2], corners[3]]  # the side towards the light: the map
+    texels = 12
+    for i in range(texels + 1):
+        t = i / texels
+        x = near[0][0] + (near[1][0] - near[0][0]) * t
+        y = near[0][1] + (near[1][1] - near[0][1]) * t
+        axes.plot([x - light[0] * 0.08, x + light[0] * 0.08], [y - light[1] * 0.08, y + light[1] * 0.08],
+                  color=ACCENT, lw=0.8)
+    axes.plot([near[0][0], near[1][0]], [near[0][1], near[1][1]], color=ACCENT, lw=2)
+    angle = math.degrees(math.atan2(near[1][1] - near[0][1], near[1][0] - near[0][0]))
+    if angle > 90 or angle < -90:
+        angle -= 180 if angle > 0 else -180
+    axes.text((near[0][0] + near[1][0]) / 2 + light[0] * 0.7, (near[0][1] + near[1][1]) / 2 + light[1] * 0.7,
+              "the shadow map: one depth per texel", color=ACCENT, fontsize=8, rotation=angle,
+              ha="center", va="center", rotation_mode="anchor")
+    # P, its ray to the light, the caster's hit.
+    p = (-0.8, 0.0)  # on the shadow side, away from the light
+    t_top = (0.9 - p[1]) / light[1]  # where the ray reaches the caster's top
+    hit = (p[0] + light[0] * t_top, 0.9)
+    end = (p[0] + light[0] * 4.4, p[1] + light[1] * 4.4)
+    axes.plot([p[0], end[0]], [p[1], end[1]], color=ACCENT, lw=0.9, ls=":")
+    axes.plot([p[0]], [p[1]], "o", color=LINE)
+    axes.text(p[0] - 0.2, p[1] - 0.35, "P: depth d_P from the light", color=LINE, fontsize=8, ha="center")
+    axes.plot([hit[0]], [hit[1]], "o", color=ACCENT)
+    axes.text(hit[0] + 0.9, hit[1] + 0.05, "stored there: d_map < d_P,\nso P is in shadow", color=ACCENT, fontsize=8)
+    # The camera's frustum, from the left.
+    eye = (-3.0, 1.6)
+    axes.plot([eye[0]], [eye[1]], "o", color=INK)
+    axes.text(eye[0] - 0.1, eye[1] + 0.15, "camera", fontsize=8)
+    for target in ((3.4, 0.0), (0.2, 0.0)):
+        axes.plot([eye[0], target[0]], [eye[1], target[1]], color=LINE, lw=0.8, ls="--")
+    axes.plot([eye[0], p[0]], [eye[1], p[1]], color=LINE, lw=1)
+    axes.text(-3.3, 2.2, "pass 2: the camera sees P\nand looks it up in the map", color=LINE, fontsize=8)
+    axes.text(2.4, 0.7, "pass 1: depth from the light\n(its orthographic box, dashed)", color=ACCENT, fontsize=8)
+    axes.set_xlim(-3.4, 4.8)
+    axes.set_ylim(-0.6, 5.0)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    axes.set_title("Shadow mapping in two passes, seen from the side", fontsize=9)
+    save(figure, out, "08_two_passes.svg")
+
+
+def acne(out):
+    # The light straight above; a surface tilted under it; map texels of
+    # width 1 across the top. Each texel stores the surface's depth at its
+    # centre: a staircase. A point between centres lies below its texel's
+    # step on one half (deeper: "in shadow") and above it on the other: the
+    # stripes of acne. The slope bias lowers every step by the slope times
+    # a texel, under the surface everywhere.
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.4), sharey=True)
+    slope = 0.45
+    xs = [i / 20 for i in range(0, 121)]
+    for axes, bias, title in ((left, 0.0, "no bias: stripes (acne)"),
+                              (right, slope * 1.0, "slope bias: steps lowered by slope × texel")):
+        axes.plot(xs, [slope * x for x in xs], color=INK, lw=1.5)
+        for i in range(6):
+            stored = slope * (i + 0.5) + bias
+            axes.plot([i, i + 1], [stored, stored], color=ACCENT, lw=1.6)
+            axes.plot([i + 0.5], [slope * (i + 0.5)], "o", color=ACCENT, markersize=3)
+        for x in xs:
+            texel = min(int(x), 5)
+            stored = slope * (texel + 0.5) + bias
+            shadowed = slope * x > stored + 1e-9
+            if shadowed:
+                axes.plot([x], [slope * x], "s", color="#9040a0", markersize=3)
+        axes.set_title(title, fontsize=8)
+        axes.set_xlabel("across the map (texels)", fontsize=8)
+        axes.tick_params(labelsize=7)
+    left.invert_yaxis()  # shared: once for both
+    left.set_ylabel("depth from the light (down the page)", fontsize=8)
+    figure.text(0.5, 0.01, "black: the surface; red: the depth each texel stored (at its centre); "
+                "purple: points deeper than their texel's depth, which the test calls shadowed",
+                fontsize=7, ha="center")
+    figure.subplots_adjust(bottom=0.22)
+    save(figure, out, "08_acne.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
-                 mirrored_seam, tbn_frame):
+                 mirrored_seam, tbn_frame, two_passes, acne):
         draw(out)
 
 

@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
         ShadowOptions base;
         base.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});  // the program's default
         base.render.lighting = shading::default_lighting(base.light.direction);
-        const int bias_map = options.quick ? 128 : 1024;
+        const int bias_map = options.quick ? 128 : 2048;
 
         std::vector<Case> cases;
         // 1. Each bias alone, on the hard test.

@@ -69,6 +69,28 @@ TEST(ShadowsTest, OrthographicSendsItsBoxToTheCube) {
     EXPECT_EQ(low.w, 1.0f);
 }
 
+// The page's worked example (docs/08_shadows.md#light-space): a light
+// straight above the box [-2, 2] x [0, 1] x [-2, 2], an 8 x 8 map. The point
+// (0.6, 0.25, -1.1) lands at u = 2.8, v = 1.8 (texel (2, 1)) at depth 0.75;
+// a plate at height 0.5 stored 0.5 there, so the point is in shadow.
+TEST(ShadowsTest, TheWorkedExampleOfThePage) {
+    perspective::Box box;
+    box.add(rl::vec3{-2, 0, -2});
+    box.add(rl::vec3{2, 1, 2});
+    ShadowMap map;
+    map.light = light_view({LightType::directional, {0, 1, 0}}, box);
+    map.depth = rl::FloatImage(8, 8, 1.0f);
+    const MapPoint p = to_map(map, {0.6f, 0.25f, -1.1f});
+    EXPECT_NEAR(p.u, 2.8f, 1e-5f);
+    EXPECT_NEAR(p.v, 1.8f, 1e-5f);
+    EXPECT_NEAR(p.depth, 0.75f, 1e-5f);
+    EXPECT_NEAR(to_map(map, {0.6f, 0.5f, -1.1f}).depth, 0.5f, 1e-5f);  // the plate above it
+    EXPECT_NEAR(map.light.texel_size({0, 0, 0}, 8), 0.5f, 1e-6f);      // 4 units over 8 texels
+    map.depth.at(2, 1) = 0.5f;
+    EXPECT_EQ(visibility(map, {0.6f, 0.25f, -1.1f}, {0, 1, 0}, {ShadowFilter::hard, 0}), 0.0f);
+    EXPECT_EQ(visibility(map, {0.6f, 0.5f, -1.1f}, {0, 1, 0}, {ShadowFilter::hard, 0}), 1.0f);
+}
+
 // Every corner of the covered box lands inside the light's clip volume.
 TEST(ShadowsTest, TheLightsViewHoldsTheWholeBox) {
     perspective::Box box;
