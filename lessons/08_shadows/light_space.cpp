@@ -73,10 +73,17 @@ LightView light_view(const ShadowLight& light, const perspective::Box& covered) 
         // A square map: the larger side, centred, so that a texel is square in world units.
         out.width = std::max(
             {in_light.max.x - in_light.min.x, in_light.max.y - in_light.min.y, radius * 1e-4f});
+        // Near and far a ten-thousandth of the depth range outside the box:
+        // a face lying on the box's side (a crate's top under a light
+        // straight above) would otherwise sit on the near plane, a rounding
+        // away from being clipped.
+        const float depth_margin =
+            std::max((in_light.max.z - in_light.min.z) * 1e-4f, radius * 1e-6f);
         const rl::vec3 mid = in_light.centre();
         out.view_projection =
             orthographic(mid.x - out.width / 2, mid.x + out.width / 2, mid.y - out.width / 2,
-                         mid.y + out.width / 2, -in_light.max.z, -in_light.min.z) *
+                         mid.y + out.width / 2, -in_light.max.z - depth_margin,
+                         -in_light.min.z + depth_margin) *
             view;
         return out;
     }

@@ -16,7 +16,13 @@ MapPoint to_map(const ShadowMap& map, rl::vec3 world_point) {
     out.u = (ndc.x + 1) * 0.5f * size;
     out.v = (ndc.y + 1) * 0.5f * size;
     out.depth = (ndc.z + 1) * 0.5f;
-    out.inside = out.u >= 0 && out.u < size && out.v >= 0 && out.v < size && out.depth <= 1;
+    // The light's box hugs the scene, so a surface on its side (a floor
+    // under a light straight above) lands on 1 give or take a rounding:
+    // within 10^-5 of the box it is inside.
+    constexpr float kRounding = 1e-5f;
+    out.inside = std::abs(ndc.x) <= 1 + kRounding && std::abs(ndc.y) <= 1 + kRounding &&
+                 ndc.z <= 1 + kRounding;
+    out.depth = std::min(out.depth, 1.0f);
     return out;
 }
 
