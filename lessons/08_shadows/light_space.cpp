@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "rasterlab/transform.hpp"
@@ -12,6 +13,13 @@ namespace {
 // Any up vector for a look-at along `forward`, not parallel to it.
 rl::vec3 up_for(rl::vec3 forward) {
     return std::abs(forward.y) > 0.99f ? rl::vec3{0, 0, 1} : rl::vec3{0, 1, 0};
+}
+
+// The light's look-at; a direction that is not finite has none.
+rl::mat4 light_look_at(rl::vec3 eye, rl::vec3 target, rl::vec3 forward) {
+    const std::optional<rl::mat4> view = rl::look_at(eye, target, up_for(forward));
+    if (!view) throw std::invalid_argument("--light: the light's direction is not usable");
+    return *view;
 }
 
 rl::vec3 componentwise(rl::vec3 a, rl::vec3 b, const float& (*pick)(const float&, const float&)) {
@@ -57,7 +65,7 @@ perspective::Box visible_box(const perspective::Camera& camera, float aspect,
 
 LightView light_view(const ShadowLight& light, const perspective::Box& covered) {
     if (covered.empty()) throw std::invalid_argument("the shadow map has nothing to cover");
-    if (!(rl::length(light.direction) > 0))
+    if (!(rl::length(light.direction) > 0) || !std::isfinite(rl::length(light.direction)))
         throw std::invalid_argument("--light: the light needs a direction");
     const rl::vec3 towards = rl::normalize(light.direction);
     const rl::vec3 centre = covered.centre();
@@ -67,7 +75,7 @@ LightView light_view(const ShadowLight& light, const perspective::Box& covered) 
     out.direction = -towards;
     if (light.type == LightType::directional) {
         out.position = centre + towards * (2 * radius);
-        const rl::mat4 view = *rl::look_at(out.position, centre, up_for(out.direction));
+        const rl::mat4 view = light_look_at(out.position, centre, out.direction);
         perspective::Box in_light;  // the covered box's corners in the light's view space
         for (int i = 0; i < 8; ++i) in_light.add(transform_point(view, covered.corner(i)));
         // A square map: the larger side, centred, so that a texel is square in world units.
@@ -92,7 +100,7 @@ LightView light_view(const ShadowLight& light, const perspective::Box& covered) 
                                 ? centre
                                 : light.position + out.direction;
     out.direction = rl::normalize(target - light.position);
-    const rl::mat4 view = *rl::look_at(light.position, target, up_for(out.direction));
+    const rl::mat4 view = light_look_at(light.position, target, out.direction);
     float far = 0;
     for (int i = 0; i < 8; ++i) far = std::max(far, -transform_point(view, covered.corner(i)).z);
     far = std::max(far, radius * 1e-3f);

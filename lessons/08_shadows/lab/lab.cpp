@@ -12,7 +12,9 @@
 // Writes 08_bias.csv, 08_resolution.csv and 08_filters.csv.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "05_perspective/view_options.hpp"
 #include "rasterlab/lab.hpp"
@@ -155,7 +157,9 @@ int main(int argc, char** argv) {
                                      "wrong_percent", "mean_error"});
         rl::ResultsTable filters({"method", "map_size", "ms_per_frame", "ms_min", "ms_max",
                                   "wrongly_lit_percent", "wrongly_shadowed_percent",
-                                  "wrong_percent", "mean_error", "scored_pixels"});
+                                  "wrong_percent", "mean_error", "sun_error", "scored_pixels"});
+        // The soft truth: the directional light as a disc the sun's size (0.27 degrees in radius).
+        std::optional<rl::FloatImage> sun;
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const Case& c = cases[i];
             const ShadowMap map = shadow_map_for(setup.models, setup.camera, 1, c.options);
@@ -177,9 +181,15 @@ int main(int argc, char** argv) {
                                     t.min_ns / 1e6, t.max_ns / 1e6, 100 * e.wrongly_lit,
                                     100 * e.wrongly_shadowed, 100 * e.wrong(), e.mean_error});
             } else {
+                const bool directional = c.options.light.type == LightType::directional;
+                if (directional && !sun)
+                    sun = rays.soft(truths.at(key), setup.camera, map.light, 0.27);
+                const ProbeFrame answers =
+                    probe(setup.models, setup.camera, setup.size, setup.size, c.options, map);
                 filters.add_row({c.label, static_cast<long long>(c.options.map.size), ms,
                                  t.min_ns / 1e6, t.max_ns / 1e6, 100 * e.wrongly_lit,
                                  100 * e.wrongly_shadowed, 100 * e.wrong(), e.mean_error,
+                                 directional ? soft_error(truths.at(key), *sun, answers) : NAN,
                                  static_cast<long long>(e.scored)});
             }
         }

@@ -1,5 +1,6 @@
 #include "visibility_truth.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace shadows {
@@ -61,6 +62,43 @@ TruthFrame SceneRays::truth(const perspective::Camera& camera, int width, int he
 }
 // [/doc:visibility-truth]
 
+rl::FloatImage SceneRays::soft(const TruthFrame& hard, const perspective::Camera& camera,
+                               const LightView& light, double radius_degrees) const {
+    const int width = hard.lit.width(), height = hard.lit.height();
+    rl::FloatImage out(width, height, NAN);
+    const perspective::RayCamera rays(camera, width, height);
+    const rl::dvec3 towards = -rl::normalize(rl::cast<double>(light.direction));
+    // Two axes across the light's direction, and 16 points of the unit disc
+    // (4 rings of 4, the rings at equal areas, each turned a quarter step).
+    const rl::dvec3 a = rl::normalize(
+        rl::cross(towards, std::abs(towards.y) > 0.9 ? rl::dvec3{1, 0, 0} : rl::dvec3{0, 1, 0}));
+    const rl::dvec3 b = rl::cross(towards, a);
+    const double spread = std::tan(radius_degrees * M_PI / 180);
+    std::array<rl::dvec3, 16> directions{};
+    for (int ring = 0; ring < 4; ++ring)
+        for (int k = 0; k < 4; ++k) {
+            const double r = std::sqrt((ring + 0.5) / 4), angle = (k + ring * 0.25) * M_PI / 2;
+            directions[static_cast<std::size_t>(4 * ring + k)] =
+                towards + (a * std::cos(angle) + b * std::sin(angle)) * (r * spread);
+        }
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (std::isnan(hard.lit.at(x, y))) continue;
+            const rl::dvec3 d = rays.direction(x + 0.5, y + 0.5);
+            const RayHit hit = bvh_.nearest(rays.eye(), d, rays.near(), rays.far());
+            const perspective::WorldTriangle& t =
+                bvh_.triangles()[static_cast<std::size_t>(hit.triangle)];
+            rl::dvec3 normal = rl::normalize(rl::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
+            if (rl::dot(normal, d) > 0) normal = -normal;
+            const rl::dvec3 origin = rays.eye() + d * hit.t + normal * (scale_ * 1e-9);
+            int passed = 0;
+            for (const rl::dvec3& to_light : directions)
+                passed += rl::dot(normal, to_light) > 0 && !bvh_.any(origin, to_light, 0, HUGE_VAL);
+            out.at(x, y) = static_cast<float>(passed) / static_cast<float>(directions.size());
+        }
+    return out;
+}
+
 namespace {
 
 // The probe: the second pass's shader, writing its map answer and the
@@ -117,6 +155,19 @@ ShadowError compare(const TruthFrame& truth, const ProbeFrame& probe) {
         e.mean_error /= n;
     }
     return e;
+}
+
+double soft_error(const TruthFrame& truth, const rl::FloatImage& soft, const ProbeFrame& probe) {
+    double sum = 0;
+    long count = 0;
+    for (int y = 0; y < soft.height(); ++y)
+        for (int x = 0; x < soft.width(); ++x) {
+            if (std::isnan(soft.at(x, y)) || truth.triangle.at(x, y) != probe.triangle.at(x, y))
+                continue;
+            sum += std::abs(probe.lit.at(x, y) - soft.at(x, y));
+            ++count;
+        }
+    return count > 0 ? sum / static_cast<double>(count) : 0;
 }
 
 }  // namespace shadows

@@ -38,6 +38,13 @@ class SceneRays {
     // cone as the renderer's cone_factor() sees it.
     TruthFrame truth(const perspective::Camera& camera, int width, int height,
                      const LightView& light, float cone_degrees = 180) const;
+    // The same points lit by a round light of the given angular radius
+    // (directional lights only): per pixel, the share of 16 rays towards
+    // points of its disc that pass, NaN where truth() is NaN. The sun is
+    // 0.27 degrees in radius; percentage-closer filters are scored against
+    // this, since their soft edges stand for such a light.
+    rl::FloatImage soft(const TruthFrame& hard, const perspective::Camera& camera,
+                        const LightView& light, double radius_degrees) const;
     const Bvh& bvh() const { return bvh_; }
 
   private:
@@ -66,5 +73,8 @@ struct ShadowError {
     double wrong() const { return wrongly_lit + wrongly_shadowed; }
 };
 ShadowError compare(const TruthFrame& truth, const ProbeFrame& probe);
+
+// The mean |answer - soft truth| over the pixels compare() scores.
+double soft_error(const TruthFrame& truth, const rl::FloatImage& soft, const ProbeFrame& probe);
 
 }  // namespace shadows

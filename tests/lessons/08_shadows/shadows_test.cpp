@@ -143,6 +143,18 @@ TEST(ShadowsTest, TooMuchBiasDetachesTheShadowFromItsCaster) {
     EXPECT_EQ(floor_shadow(lifted, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 1.0);
 }
 
+// The price of back faces in the map: a single-sided caster has none, so
+// it casts no shadow at all (the plate of the test above, its floor lit).
+TEST(ShadowsTest, ABackFaceMapLosesSingleSidedCasters) {
+    std::vector<MappedModel> scene = floor_scene(false);
+    scene.push_back(model("floor", {.translation = {0, 0.1f, 0}, .scale = {0.5f, 0.5f, 0.5f}}));
+    const rl::vec3 light{-1, 1, 0};
+    const ShadowMap front = map_of(scene, light, {.size = 512});
+    const ShadowMap back = map_of(scene, light, {.size = 512, .cull = perspective::Cull::front});
+    EXPECT_EQ(floor_shadow(front, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 0.0);
+    EXPECT_EQ(floor_shadow(back, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 1.0);
+}
+
 // A map made by hand: identity light matrix (the cube [-1, 1]^3 is the
 // light's clip space), 2 x 2 texels, the left column near (0.2), the right
 // far (0.9).
@@ -253,6 +265,9 @@ TEST(ShadowsTest, AnEmptySceneHasAnEmptyMapAndAZeroLightIsRefused) {
     perspective::Box box;
     box.add(rl::vec3{0, 0, 0});
     EXPECT_THROW(light_view({LightType::directional, {0, 0, 0}}, box), std::invalid_argument);
+    EXPECT_THROW(light_view({LightType::directional, {INFINITY, 1, 0}}, box),
+                 std::invalid_argument);
+    EXPECT_THROW(light_view({LightType::spot, {0, 1, 0}, {NAN, 0, 0}}, box), std::invalid_argument);
     EXPECT_THROW(render_shadow_map(none, light_view({}, box), {.size = 0}), std::invalid_argument);
     EXPECT_THROW(render_shadow_map(none, light_view({}, box), {.size = kMaxShadowMapSize + 1}),
                  std::invalid_argument);
