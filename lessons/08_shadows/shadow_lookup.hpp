@@ -5,7 +5,7 @@
 // answers (percentage-closer filtering: the comparisons are averaged, never
 // the depths). A normal offset moves the point along its surface normal by
 // a number of map texels first, away from the surface it might shadow itself
-// with. Derivations: docs/08_shadows.md#the-lookup.
+// with. Derivations: docs/08_shadows.md#filtering-percentage-closer.
 //
 //   const float lit = shadows::visibility(map, world_point, world_normal,
 //                                         {shadows::ShadowFilter::pcf2, 1.0f});

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <string>
 
 #include "05_perspective/view_options.hpp"
 #include "rasterlab/lab.hpp"
@@ -89,7 +90,7 @@ int main(int argc, char** argv) {
             c.options.map.slope_bias = static_cast<float>(b);
             cases.push_back(c);
         }
-        for (double b : {1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2}) {
+        for (double b : {1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2, 3e-2, 1e-1}) {
             Case c{"constant", "constant bias", b, hard_without_bias(base, bias_map)};
             c.options.map.constant_bias = static_cast<float>(b);
             cases.push_back(c);
@@ -129,12 +130,10 @@ int main(int argc, char** argv) {
             spot.options.light.position =
                 default_spot_position(scene_box(setup.models), base.light.direction);
             cases.push_back(spot);
-            for (double b : {1e-4, 1e-3}) {
-                Case t{"setup",
-                       "tinyrenderer's way: 8000^2, constant bias " +
-                           std::string(b == 1e-4 ? "1e-4" : "1e-3"),
-                       b, hard_without_bias(base, options.quick ? 512 : 8000)};
-                t.options.map.constant_bias = static_cast<float>(b);
+            for (const char* b : {"1e-4", "1e-3", "3e-3", "1e-2"}) {
+                Case t{"setup", std::string("tinyrenderer's way: 8000^2, constant bias ") + b,
+                       std::stod(b), hard_without_bias(base, options.quick ? 512 : 8000)};
+                t.options.map.constant_bias = static_cast<float>(t.value);
                 t.options.fit = Fit::scene;
                 cases.push_back(t);
             }
