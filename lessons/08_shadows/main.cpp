@@ -95,12 +95,6 @@ int main(int argc, char** argv) {
 
     return rl::guarded_main("08_shadows", [&] {
         rl::check_image_output(output);
-        if (options.map.size < 1 || options.map.size > shadows::kMaxShadowMapSize)
-            throw std::invalid_argument("--shadow-map-size: " + std::to_string(options.map.size) +
-                                        " is outside 1 to " +
-                                        std::to_string(shadows::kMaxShadowMapSize) +
-                                        " (the cap: a map of 8192 x 8192 "
-                                        "floats takes 256 MiB)");
         options.light.direction = rl::normalize(perspective::light_direction(view));
         options.render.lighting = shading::default_lighting(options.light.direction);
         if (one_light) options.render.lighting.lights.resize(1);

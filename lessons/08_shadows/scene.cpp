@@ -60,7 +60,8 @@ perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel
                                    const ShadowMap& map, perspective::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     return draw_shadowed(models, camera, aspect, options, map,
-                         [&](const shading::Surface& surface, const ShadowedShader& shader) {
+                         [&](const normal_mapping::MappedModel&, const shading::Surface& surface,
+                             const ShadowedShader& shader) {
                              return shading::draw(surface, shader, frame, options.render.pipeline,
                                                   options.render.output);
                          });

@@ -44,7 +44,7 @@ struct SplitLighting {
 SplitLighting split_lighting(const ShadowOptions& options);
 
 // Each model of the second pass, placed and given its shader, handed to
-// draw(surface, shader), which returns the counts of its draw.
+// draw(model, surface, shader), which returns the counts of its draw.
 template <class Draw>
 perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::MappedModel>& models,
                                           const perspective::Camera& camera, float aspect,
@@ -61,7 +61,7 @@ perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::Mapp
         const std::optional<shading::Placed> p = shading::place(
             m.lit, view_projection, camera, r.lighting, sampler, r.cull_objects, counts);
         if (!p) continue;
-        counts += draw(p->surface,
+        counts += draw(m, p->surface,
                        ShadowedShader{normal_mapping::shader_for(m, *p, r), map, options.lookup,
                                       lights.key, options.light.cone_degrees, lights.rest});
     }

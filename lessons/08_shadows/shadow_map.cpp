@@ -24,7 +24,7 @@ ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& mode
     if (options.size < 1 || options.size > kMaxShadowMapSize)
         throw std::invalid_argument("--shadow-map-size: " + std::to_string(options.size) +
                                     " is outside 1 to " + std::to_string(kMaxShadowMapSize) +
-                                    " texels");
+                                    " texels (the cap: a map of 8192 x 8192 floats takes 256 MiB)");
     perspective::TargetOptions target_options;
     target_options.depth.constant_bias = options.constant_bias;
     target_options.depth.slope_bias = options.slope_bias;

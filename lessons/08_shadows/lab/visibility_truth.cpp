@@ -121,19 +121,18 @@ ProbeFrame probe(const std::vector<normal_mapping::MappedModel>& models,
                  const perspective::Camera& camera, int width, int height,
                  const ShadowOptions& options, const ShadowMap& map) {
     perspective::RenderTarget<float, int> target(width, height, {}, NAN, -1);
-    int first = 0;
-    std::size_t model = 0;
-    draw_shadowed(
-        models, camera, static_cast<float>(width) / static_cast<float>(height), options, map,
-        [&](const shading::Surface& surface, const ShadowedShader& shader) {
-            // draw_shadowed skips models it culls: find this one's place in the numbering.
-            while (model < models.size() && &models[model].lit.model.mesh != surface.view.mesh) {
-                first += static_cast<int>(models[model].lit.model.mesh.faces.size());
-                ++model;
-            }
-            return perspective::draw(surface, ProbeShader{shader, first}, target,
-                                     options.render.pipeline);
-        });
+    // Each model's first triangle in world_triangles()' numbering.
+    std::vector<int> first(models.size() + 1, 0);
+    for (std::size_t i = 0; i < models.size(); ++i)
+        first[i + 1] = first[i] + static_cast<int>(models[i].lit.model.mesh.faces.size());
+    draw_shadowed(models, camera, static_cast<float>(width) / static_cast<float>(height), options,
+                  map,
+                  [&](const normal_mapping::MappedModel& m, const shading::Surface& surface,
+                      const ShadowedShader& shader) {
+                      const auto index = static_cast<std::size_t>(&m - models.data());
+                      return perspective::draw(surface, ProbeShader{shader, first[index]}, target,
+                                               options.render.pipeline);
+                  });
     return {std::move(target.colour<0>()), std::move(target.colour<1>())};
 }
 
