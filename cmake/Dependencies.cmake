@@ -42,3 +42,14 @@ else()
 endif()
 rasterlab_require(matplotlib_FOUND "matplotlib for ${Python3_EXECUTABLE} (draws the lab charts)"
                   python3-matplotlib)
+
+# Lesson 12's SIMD and threads, and its peer (Mesa's llvmpipe through
+# OSMesa: optional, the lab and the program say the peer is skipped without it).
+find_package(hwy CONFIG QUIET)
+rasterlab_require(hwy_FOUND "Google Highway" libhwy-dev)
+find_package(TBB CONFIG QUIET)
+rasterlab_require(TBB_FOUND "oneTBB" libtbb-dev)
+pkg_check_modules(OSMESA QUIET IMPORTED_TARGET osmesa)
+if(NOT OSMESA_FOUND)
+  message(STATUS "OSMesa not found (libosmesa6-dev): lesson 12 is built without its llvmpipe peer")
+endif()

@@ -12,6 +12,9 @@ packages=(
   libcli11-dev                              # command lines
   libgtest-dev                              # unit tests
   libbenchmark-dev                          # the labs' timing
+  libhwy-dev                                # lesson 12's SIMD (Google Highway)
+  libtbb-dev                                # lesson 12's threads (oneTBB)
+  libosmesa6-dev                            # lesson 12's peer: Mesa's llvmpipe, off screen
 )
 
 if [ "${1:-}" = "fuzz" ]; then

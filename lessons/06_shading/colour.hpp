@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "04_textures/sampling.hpp"
 #include "rasterlab/image.hpp"
@@ -29,6 +30,16 @@ T linear_to_srgb(T c) {
     c = std::clamp(c, T(0), T(1));
     return c <= T(0.0031308) ? c * T(12.92) : T(1.055) * std::pow(c, T(1) / T(2.4)) - T(0.055);
 }
+
+// The tables that turn a linear value into its nearest sRGB byte without a
+// pow: steps[k], the value where byte k + 1 begins (steps[255] infinite),
+// and first[i], the byte at i / 4096, where the search up the steps starts
+// (at most two steps away). Lesson 12's SIMD encoder gathers from them.
+struct SrgbByteTables {
+    std::array<float, 256> steps;
+    std::array<std::uint8_t, 4097> first;
+};
+const SrgbByteTables& srgb_byte_tables();
 
 // Texels as sRGB: each byte's linear value, and the nearest byte of a value.
 const textures::TexelEncoding& srgb_texels();

@@ -1,0 +1,45 @@
+#include "mapped_cli.hpp"
+
+#include "rasterlab/main_guard.hpp"
+
+namespace normal_mapping {
+
+void add_mapped_options(CLI::App& app, MappedCli& cli, const std::string& default_scene) {
+    perspective::add_view_options(app, cli.view, default_scene);
+    rl::add_method_option(app, "--normal-map", cli.options.normal_map, kNormalMaps,
+                          "Normal map to use");
+    rl::add_method_option(app, "--tangents", cli.tangents, kTangentMethods, "Tangent frames");
+    rl::add_method_option(
+        app, "--specular", cli.options.specular, shading::kSpeculars,
+        "The highlight, Phong's or Blinn's (lesson 06; lit per pixel either way)");
+    rl::add_method_option(app, "--filter", cli.options.filter, textures::kFilters,
+                          "Texture filter, for every map (lesson 04)");
+    app.add_flag("--naive", cli.naive,
+                 "Light the sRGB bytes as if they were linear and write the result as it is "
+                 "(what lessons 00-05 did)");
+    app.add_flag("--one-light", cli.one_light, "Only the --light, without the dim fill light");
+}
+
+MappedScene load_scene(MappedCli& cli, int width, int height, const char* program) {
+    RenderOptions& options = cli.options;
+    options.lighting = shading::default_lighting(perspective::light_direction(cli.view));
+    if (cli.one_light) options.lighting.lights.resize(1);
+    options.output = cli.naive ? shading::Output::naive : shading::Output::srgb;
+    std::vector<std::string> warnings;
+    MappedScene scene;
+    if (cli.view.models.empty())
+        scene.models = default_scene(cli.tangents, warnings, options.output, options.normal_map);
+    for (const std::string& path : cli.view.models)  // as stored: the identity model matrix
+        scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), cli.tangents, warnings,
+                                                 options.output, options.normal_map));
+    rl::print_warnings(program, warnings);
+    perspective::Box box;
+    for (const MappedModel& m : scene.models)
+        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    scene.camera = perspective::resolve_camera(cli.view, box, aspect);
+    rl::print_warnings(program, {perspective::depth_precision_warning(scene.camera)});
+    return scene;
+}
+
+}  // namespace normal_mapping

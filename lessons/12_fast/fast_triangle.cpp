@@ -1,0 +1,53 @@
+#include "fast_triangle.hpp"
+
+#include <algorithm>
+
+namespace fast {
+
+bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, FastTriangle& out) {
+    const triangles::ScreenTriangle screen = t.screen();
+    if (!triangles::within_raster_range(screen)) return false;
+    const triangles::FixedTriangle f = triangles::fixed_triangle(screen);
+    FastTriangle& o = out;
+    o.model = model;
+    if (f.area == 0) {  // lesson 02 draws nothing of it
+        o.x0 = o.y0 = 0, o.x1 = o.y1 = -1;
+        return true;
+    }
+    const auto to_pixels = [](std::int64_t fixed) {
+        return static_cast<float>(fixed) / triangles::kSubpixels;
+    };
+    const triangles::FixedPoint* v = f.v;
+    const triangles::PixelRange xs =
+        triangles::centres_between(to_pixels(std::min({v[0].x, v[1].x, v[2].x})),
+                                   to_pixels(std::max({v[0].x, v[1].x, v[2].x})), 0, width);
+    const triangles::PixelRange ys =
+        triangles::centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
+                                   to_pixels(std::max({v[0].y, v[1].y, v[2].y})), 0, height);
+    o.x0 = xs.first, o.x1 = xs.last, o.y0 = ys.first, o.y1 = ys.last;
+    for (int k = 0; k < 3; ++k) {
+        const triangles::FixedPoint a = v[(k + 1) % 3], b = v[(k + 2) % 3];
+        o.edge_x[k] = a.x, o.edge_y[k] = a.y;
+        o.edge_dx[k] = b.x - a.x, o.edge_dy[k] = b.y - a.y;
+        o.threshold[k] = triangles::is_top_left(a, b) ? -1 : 0;
+    }
+    o.inverse_area = 1.0f / static_cast<float>(f.area);
+    // The snapped order: lesson 02 swapped vertices 1 and 2 to make it
+    // counter-clockwise; weight k of the edges belongs to input vertex order[k].
+    const int order[3] = {0, f.swapped ? 2 : 1, f.swapped ? 1 : 2};
+    for (int k = 0; k < 3; ++k) {
+        const int i = order[k];
+        o.z[k] = t.window[i].z;
+        o.inverse_w[k] = t.inverse_w[i];
+        const auto& lanes = std::bit_cast<perspective::Lanes<Varyings>>(t.over_w[i]);
+        std::copy(lanes.begin(), lanes.end(), o.over_w[k]);
+    }
+    o.z_min = std::min({o.z[0], o.z[1], o.z[2]});
+    o.z_max = std::max({o.z[0], o.z[1], o.z[2]});
+    o.d_uv_over_w[0][0] = t.d_over_w_dx.uv.x, o.d_uv_over_w[0][1] = t.d_over_w_dx.uv.y;
+    o.d_uv_over_w[1][0] = t.d_over_w_dy.uv.x, o.d_uv_over_w[1][1] = t.d_over_w_dy.uv.y;
+    o.d_inverse_w[0] = t.d_inverse_w_dx, o.d_inverse_w[1] = t.d_inverse_w_dy;
+    return true;
+}
+
+}  // namespace fast

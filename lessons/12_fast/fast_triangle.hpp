@@ -1,0 +1,53 @@
+// One triangle as the fast path's tiles read it, set up once per frame: lesson
+// 02's fixed-point edge functions (the same integers, so the same coverage,
+// bit for bit) and, in the snapped triangle's vertex order, everything the
+// depth test and the shader interpolate: window depth, 1/w and the varyings
+// divided by w (lesson 05's perspective-correct interpolation), with the
+// screen derivatives lesson 05 uses for the mip level.
+//
+//   const fast::FastTriangle t = fast::fast_triangle(setup, model, width, height);
+//   if (t.empty()) { /* no pixel centre inside: skip */ }
+#pragma once
+
+#include <cstdint>
+
+#include "02_triangles/raster_edge.hpp"
+#include "05_perspective/pipeline.hpp"
+#include "07_normal_mapping/normal_mapped.hpp"
+
+namespace fast {
+
+using Varyings = normal_mapping::NormalMappedShader::Varyings;
+inline constexpr int kVaryingFloats = sizeof(Varyings) / sizeof(float);  // 12
+using Setup = perspective::TriangleSetup<Varyings>;
+
+struct FastTriangle {
+    // Edge k (opposite vertex k) as lesson 02 evaluates it at a pixel centre
+    // p, in 1/256 pixel: E_k(p) = a_k (p.y - y_k) - b_k (p.x - x_k), with
+    // (x_k, y_k) the edge's first vertex; the centre is inside when E_k > threshold_k
+    // for all three (threshold -1 on a top-left edge: E >= 0; else 0: E > 0).
+    std::int64_t edge_x[3], edge_y[3], edge_dx[3], edge_dy[3], threshold[3];
+    float inverse_area;        // 1 / (2 area) in the same units: weight b_k = E_k * inverse_area
+    int x0, y0, x1, y1;        // the pixel centres of its box, inclusive, within the frame
+    float z[3], z_min, z_max;  // window depth at the vertices (in snapped order)
+    float inverse_w[3];        // 1 / w
+    float over_w[3][kVaryingFloats];  // varyings / w
+    float d_uv_over_w[2][2];          // d(uv / w)/dx, d(uv / w)/dy  (u then v)
+    float d_inverse_w[2];             // d(1/w)/dx, d(1/w)/dy
+    std::uint32_t model;              // which model's material shades it
+    bool empty() const { return x0 > x1 || y0 > y1; }
+    // E_k at the centre of pixel (x, y), exactly as lesson 02 computes it.
+    std::int64_t edge_at(int k, int x, int y) const {
+        const std::int64_t px = std::int64_t{x} * triangles::kSubpixels + triangles::kSubpixels / 2;
+        const std::int64_t py = std::int64_t{y} * triangles::kSubpixels + triangles::kSubpixels / 2;
+        return edge_dx[k] * (py - edge_y[k]) - edge_dy[k] * (px - edge_x[k]);
+    }
+};
+
+// The fast triangle of a set-up triangle (lesson 05's set_up), clipped to a
+// width x height frame. Returns false when lesson 02's rasterizer would refuse
+// it (beyond 2^22 pixels, NaN); `out` is then untouched. A triangle of zero
+// area comes back empty, as lesson 02 draws nothing of it.
+bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, FastTriangle& out);
+
+}  // namespace fast

@@ -1,0 +1,35 @@
+// What the fast shader reads for one model in one frame: lesson 07's
+// NormalMappedShader's uniforms (eye, lights, normal matrix, maps, options)
+// flattened into plain arrays that SIMD code broadcasts, with the textures
+// packed for gathers. Filled in place each frame (no allocation).
+#pragma once
+
+#include <cstdint>
+
+#include "06_shading/lighting.hpp"
+#include "packed_texture.hpp"
+
+namespace fast {
+
+inline constexpr int kMaxLights = 8;
+
+// Where the normal comes from, after the maps the model has are known.
+enum class NormalSource : std::uint8_t { interpolated, tangent_map, object_map };
+
+struct Material {
+    float eye[3];
+    int lights = 0;
+    float light_direction[kMaxLights][3], light_colour[kMaxLights][3];
+    float ambient[3], specular_colour[3], shininess;
+    bool blinn = true;       // Blinn's half-vector highlight, or Phong's mirror
+    float normal_matrix[9];  // row-major: object-space map normals to world
+    NormalSource normal_source = NormalSource::interpolated;
+    textures::Filter filter = textures::Filter::trilinear;
+    bool srgb = true;  // diffuse texels decoded from sRGB and output encoded to sRGB
+    const PackedTexture* albedo = nullptr;  // none: the plain colour
+    float colour[3];
+    const PackedTexture* normal_map = nullptr;  // the one normal_source names
+    const PackedTexture* specular_map = nullptr;
+};
+
+}  // namespace fast

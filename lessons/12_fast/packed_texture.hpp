@@ -1,0 +1,30 @@
+// A texture's mip levels laid out for SIMD lookups: every level's texels in
+// one array of 32-bit RGBA words (a lane gathers a texel with one load), and
+// a small table of where each level starts and how big it is (a lane gathers
+// its level's row length). The levels are lesson 04's own, so a lookup reads
+// the very texels lesson 07 reads.
+//
+//   const fast::PackedTexture packed(chain);   // once, outside the frame loop
+//   packed.texels[packed.level_offset[2] + y * packed.level_width[2] + x]  // texel (x, y) of level
+//   2
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "04_textures/sampling.hpp"
+
+namespace fast {
+
+struct PackedTexture {
+    static constexpr int kMaxLevels = 32;  // a 2^31-texel side has 32 levels
+    // Every level, or level 0 alone (for the filters that read no other).
+    explicit PackedTexture(const textures::MipChain& chain, bool all_levels = true);
+    std::vector<std::uint32_t> texels;  // level 0, then 1, ...; rows bottom first
+    // Per level (padded to kMaxLevels with the last level, so that a gather
+    // with a clamped index never reads past the table):
+    std::int32_t level_offset[kMaxLevels], level_width[kMaxLevels], level_height[kMaxLevels];
+    int levels = 0;
+};
+
+}  // namespace fast

@@ -1,0 +1,335 @@
+#include "renderer.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+#include <cstring>
+#include <optional>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace fast {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double milliseconds_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// What makes two corners one vertex: the same position and uv indices and
+// the same normal and tangent (compared as bits: the vertex function reads
+// nothing else).
+struct CornerKey {
+    int position, uv;
+    std::uint32_t normal[3], tangent[4];
+    friend bool operator==(const CornerKey&, const CornerKey&) = default;
+};
+struct CornerHash {
+    std::size_t operator()(const CornerKey& k) const {
+        std::size_t h = static_cast<std::size_t>(k.position) * 0x9e3779b97f4a7c15ull ^
+                        static_cast<std::size_t>(k.uv + 1);
+        for (std::uint32_t v : k.normal) h = (h ^ v) * 0x100000001b3ull;
+        for (std::uint32_t v : k.tangent) h = (h ^ v) * 0x100000001b3ull;
+        return h;
+    }
+};
+
+std::unique_ptr<PackedTexture> packed(const std::optional<textures::MipChain>& chain,
+                                      bool all_levels) {
+    return chain ? std::make_unique<PackedTexture>(*chain, all_levels) : nullptr;
+}
+
+}  // namespace
+
+FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions& options) {
+    FastModel out;
+    out.source = &model;
+    const rl::Mesh& mesh = model.lit.model.mesh;
+    std::unordered_map<CornerKey, std::uint32_t, CornerHash> seen;
+    out.indices.resize(mesh.faces.size() * 3);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const std::size_t corner = 3 * f + c;
+            CornerKey key{mesh.faces[f].corners[c].position, mesh.faces[f].corners[c].uv, {}, {}};
+            std::memcpy(key.normal, &model.lit.normals[corner], sizeof key.normal);
+            std::memcpy(key.tangent, &model.tangents[corner], sizeof key.tangent);
+            const auto [at, added] =
+                seen.try_emplace(key, static_cast<std::uint32_t>(out.representative.size()));
+            if (added) out.representative.push_back(static_cast<std::uint32_t>(corner));
+            out.indices[corner] = at->second;
+        }
+    const bool all_levels = options.render.filter == textures::Filter::trilinear;
+    out.albedo = std::make_unique<PackedTexture>(model.lit.model.texture, all_levels);
+    out.tangent_map = packed(model.maps.tangent_normals, all_levels);
+    out.object_map = packed(model.maps.object_normals, all_levels);
+    out.specular_map = packed(model.maps.specular, all_levels);
+    return out;
+}
+
+struct Renderer::Impl {
+    FastOptions options;
+    int width, height;
+    tbb::task_arena arena;
+    std::vector<FastModel> models;
+    // Per model, set once: lesson 06's uniforms (only the MVP and the eye
+    // change from frame to frame) and the surface; empty for a model whose
+    // matrix flattens it.
+    std::vector<std::optional<shading::Placed>> placed;
+    std::vector<Material> materials;
+    std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
+    std::vector<char> drawn;                                           // per model, this frame
+    std::vector<FastTriangle> triangles;
+    int tiles_x, tiles_y;
+    std::vector<std::vector<std::uint32_t>> bins;       // per tile
+    std::vector<TileCounts> tile_counts;                // per tile
+    std::vector<std::unique_ptr<TileBuffers>> buffers;  // per thread of the arena
+
+    Impl(const std::vector<normal_mapping::MappedModel>& sources, int w, int h,
+         const FastOptions& o)
+        : options(o),
+          width(w),
+          height(h),
+          arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic) {
+        if (o.tile_size < kBlock || o.tile_size % kBlock != 0 || o.tile_size > 1024)
+            throw std::invalid_argument(
+                "the tile size must be a multiple of 8 from 8 to 1024, not " +
+                std::to_string(o.tile_size));
+        const normal_mapping::RenderOptions& r = o.render;
+        if (r.pipeline.raster != triangles::RasterMethod::edge)
+            throw std::invalid_argument(
+                "the fast path rasterizes with lesson 02's edge functions only");
+        for (const normal_mapping::MappedModel& m : sources) {
+            models.push_back(fast_model(m, o));
+            placed.push_back(std::nullopt);
+            if (const std::optional<rl::mat3> normals =
+                    shading::normal_matrix(m.lit.model.transform))
+                placed.back() = shading::Placed{
+                    {m.lit.model.transform,
+                     *normals,
+                     rl::mat4::identity(),
+                     {},
+                     r.lighting,
+                     &m.lit.model.texture,
+                     {},
+                     {}},
+                    shading::Surface(m.lit.model.mesh, m.lit.normals, m.lit.model.transform)};
+            clip.emplace_back(models.back().representative.size());
+            materials.push_back(material_for(models.back(), placed.back()));
+        }
+        drawn.resize(models.size());
+        std::size_t faces = 0;
+        for (const FastModel& m : models) faces += m.indices.size() / 3;
+        triangles.reserve(faces + faces / 4 + 16);
+        tiles_x = (width + o.tile_size - 1) / o.tile_size;
+        tiles_y = (height + o.tile_size - 1) / o.tile_size;
+        bins.resize(static_cast<std::size_t>(tiles_x) * static_cast<std::size_t>(tiles_y));
+        tile_counts.resize(bins.size());
+        for (int i = 0; i < arena.max_concurrency(); ++i)
+            buffers.push_back(std::make_unique<TileBuffers>(o.tile_size));
+    }
+
+    Material material_for(const FastModel& m, const std::optional<shading::Placed>& p) const {
+        const normal_mapping::RenderOptions& r = options.render;
+        Material out;
+        const shading::Lighting<float>& lighting = r.lighting;
+        if (lighting.lights.size() > static_cast<std::size_t>(kMaxLights))
+            throw std::invalid_argument("the fast path takes at most 8 lights");
+        out.lights = static_cast<int>(lighting.lights.size());
+        for (int i = 0; i < out.lights; ++i)
+            for (int c = 0; c < 3; ++c) {
+                out.light_direction[i][c] = lighting.lights[static_cast<std::size_t>(i)]
+                                                .direction[static_cast<std::size_t>(c)];
+                out.light_colour[i][c] = lighting.lights[static_cast<std::size_t>(i)]
+                                             .colour[static_cast<std::size_t>(c)];
+            }
+        for (std::size_t c = 0; c < 3; ++c) {
+            out.ambient[c] = lighting.ambient[c];
+            out.specular_colour[c] = lighting.specular[c];
+            out.eye[c] = 0;
+        }
+        out.shininess = lighting.shininess;
+        out.blinn = r.specular == shading::Specular::blinn_phong;
+        if (p)
+            for (std::size_t i = 0; i < 3; ++i)
+                for (std::size_t j = 0; j < 3; ++j)
+                    out.normal_matrix[3 * i + j] = p->uniforms.normal_matrix[i][j];
+        out.filter = r.filter;
+        out.srgb = r.output == shading::Output::srgb;
+        out.albedo = m.albedo.get();
+        const shading::Uniforms defaults{};
+        for (std::size_t c = 0; c < 3; ++c) out.colour[c] = defaults.colour[c];
+        if (r.normal_map == normal_mapping::NormalMap::tangent && m.tangent_map) {
+            out.normal_source = NormalSource::tangent_map;
+            out.normal_map = m.tangent_map.get();
+        } else if (r.normal_map == normal_mapping::NormalMap::object && m.object_map) {
+            out.normal_source = NormalSource::object_map;
+            out.normal_map = m.object_map.get();
+        }
+        out.specular_map = m.specular_map.get();
+        return out;
+    }
+};
+
+Renderer::Renderer(const std::vector<normal_mapping::MappedModel>& models, int width, int height,
+                   const FastOptions& options)
+    : impl_(std::make_unique<Impl>(models, width, height, options)), frame_(width, height) {}
+
+Renderer::~Renderer() = default;
+
+int Renderer::threads() const {
+    return impl_->arena.max_concurrency();
+}
+
+FrameCounts Renderer::render(const perspective::Camera& camera) {
+    Impl& s = *impl_;
+    const normal_mapping::RenderOptions& r = s.options.render;
+    FrameCounts counts;
+    const float aspect = static_cast<float>(s.width) / static_cast<float>(s.height);
+    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+
+    // 1. The vertex stage: lesson 07's vertex function, once per distinct vertex.
+    auto start = Clock::now();
+    for (std::size_t i = 0; i < s.models.size(); ++i) {
+        s.drawn[i] = false;
+        if (!s.placed[i]) continue;
+        shading::Placed& p = *s.placed[i];
+        const perspective::TexturedModel& model = s.models[i].source->lit.model;
+        p.uniforms.model_view_projection = view_projection * model.transform;
+        p.uniforms.eye = camera.eye;
+        for (std::size_t c = 0; c < 3; ++c) s.materials[i].eye[c] = camera.eye[c];
+        if (r.cull_objects &&
+            perspective::outside_frustum(model.box, p.uniforms.model_view_projection)) {
+            ++counts.objects_culled;
+            continue;
+        }
+        s.drawn[i] = true;
+        const normal_mapping::NormalMappedShader shader =
+            normal_mapping::shader_for(*s.models[i].source, p, r);
+        const FastModel& m = s.models[i];
+        const bool mirrored = p.surface.view.mirrored;
+        std::vector<perspective::ClipVertex<Varyings>>& out = s.clip[i];
+        counts.vertices += m.representative.size();
+        counts.faces += m.indices.size() / 3;
+        s.arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.representative.size(), 1024),
+                              [&](const tbb::blocked_range<std::size_t>& range) {
+                                  for (std::size_t v = range.begin(); v != range.end(); ++v) {
+                                      const int face = static_cast<int>(m.representative[v] / 3);
+                                      const int corner = static_cast<int>(m.representative[v] % 3);
+                                      // The surface hands corner k over as (3 - k) % 3 when
+                                      // mirrored.
+                                      const int k = mirrored ? (3 - corner) % 3 : corner;
+                                      out[v] = shader.vertex(p.surface.corner(face, k));
+                                  }
+                              });
+        });
+    }
+    times_.vertex = milliseconds_since(start);
+
+    // 2. Cull, clip and set up every face, in lesson 07's order.
+    start = Clock::now();
+    s.triangles.clear();
+    const perspective::PipelineOptions& pipeline = r.pipeline;
+    const perspective::ClipPlanes planes =
+        perspective::clip_planes(pipeline.clip, s.width, s.height);
+    perspective::PipelineCounts pc;
+    const double most_visited =
+        pipeline.max_overdraw > 0 ? pipeline.max_overdraw * s.width * s.height : HUGE_VAL;
+    double visited = 0;
+    for (std::size_t i = 0; i < s.models.size(); ++i) {
+        if (!s.drawn[i]) continue;
+        const FastModel& m = s.models[i];
+        const bool mirrored = s.placed[i]->surface.view.mirrored;
+        const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
+        const std::size_t faces = m.indices.size() / 3;
+        for (std::size_t f = 0; f < faces; ++f) {
+            const std::uint32_t* index = &m.indices[3 * f];
+            const std::array<perspective::ClipVertex<Varyings>, 3> v = {
+                vertices[index[0]], vertices[index[mirrored ? 2 : 1]],
+                vertices[index[mirrored ? 1 : 2]]};
+            if (pipeline.cull != perspective::Cull::none) {
+                const double area =
+                    perspective::facing(v[0].position, v[1].position, v[2].position);
+                if (pipeline.cull == perspective::Cull::back ? area <= 0 : area >= 0) {
+                    ++counts.back_faces;
+                    continue;
+                }
+            }
+            const perspective::ClipPolygon<Varyings> polygon =
+                perspective::clip_face(v, planes, pc);
+            for (int k = 1; k + 1 < polygon.size; ++k) {
+                const Setup t = perspective::set_up(
+                    polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(k)],
+                    polygon.vertices[static_cast<std::size_t>(k + 1)], perspective::NoFlat{},
+                    static_cast<int>(f), pipeline.interpolation, s.width, s.height);
+                FastTriangle& fast = s.triangles.emplace_back();
+                if (!fast_triangle(t, static_cast<std::uint32_t>(i), s.width, s.height, fast)) {
+                    s.triangles.pop_back();
+                    ++counts.refused;
+                    continue;
+                }
+                if (fast.empty()) {
+                    s.triangles.pop_back();
+                    continue;
+                }
+                visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
+                if (visited > most_visited) perspective::throw_overdraw(most_visited);
+            }
+        }
+    }
+    counts.clipped = pc.clipped;
+    counts.outside = pc.outside;
+    counts.triangles = s.triangles.size();
+    times_.setup = milliseconds_since(start);
+
+    // 3. Binning: each triangle into the tiles its box touches, in order.
+    start = Clock::now();
+    for (std::vector<std::uint32_t>& bin : s.bins) bin.clear();
+    const int tile = s.options.tile_size;
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+        const FastTriangle& f = s.triangles[t];
+        for (int ty = f.y0 / tile; ty <= f.y1 / tile; ++ty)
+            for (int tx = f.x0 / tile; tx <= f.x1 / tile; ++tx)
+                s.bins[static_cast<std::size_t>(ty * s.tiles_x + tx)].push_back(
+                    static_cast<std::uint32_t>(t));
+    }
+    times_.binning = milliseconds_since(start);
+
+    // 4. The tiles, in parallel: each one rasterized, shaded and resolved by one thread.
+    start = Clock::now();
+    s.arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.bins.size(), 1),
+                          [&](const tbb::blocked_range<std::size_t>& range) {
+                              TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(
+                                  tbb::this_task_arena::current_thread_index())];
+                              for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                                  const int tx = static_cast<int>(i) % s.tiles_x,
+                                            ty = static_cast<int>(i) / s.tiles_x;
+                                  TileWork work{tx * tile,
+                                                ty * tile,
+                                                std::min(tile, s.width - tx * tile),
+                                                std::min(tile, s.height - ty * tile),
+                                                &s.triangles,
+                                                s.bins[i].data(),
+                                                s.bins[i].size(),
+                                                s.materials.data()};
+                                  s.tile_counts[i] = {};
+                                  render_tile(work, buffers, frame_, s.tile_counts[i]);
+                              }
+                          });
+    });
+    times_.tiles = milliseconds_since(start);
+    for (const TileCounts& c : s.tile_counts) {
+        counts.tiles.blocks_rejected += c.blocks_rejected;
+        counts.tiles.blocks_full += c.blocks_full;
+        counts.tiles.blocks_partial += c.blocks_partial;
+        counts.tiles.depth_passed += c.depth_passed;
+        counts.tiles.shaded += c.shaded;
+    }
+    return counts;
+}
+
+}  // namespace fast

@@ -1,0 +1,79 @@
+// The fast path: lesson 07's scene and shading, rendered by a pipeline of its
+// own built for speed. Per frame:
+//
+//   vertex stage, once per distinct vertex (lesson 07's own vertex function)
+//     -> cull, clip, set-up (lessons 05 and 02) -> bin into square tiles
+//     -> per tile, in parallel, each tile owned by one thread:
+//          rasterize to depth + triangle ids (8x8 blocks, SIMD)
+//          -> shade each visible pixel once (SIMD) -> copy into the frame
+//
+// The image is lesson 07's (the same coverage, shading in the same order of
+// operations) whatever the thread count. Derivations and measurements:
+// docs/12_fast.md.
+//
+//   fast::Renderer renderer(models, 800, 800, {});
+//   renderer.render(camera);                 // allocates nothing after the first frame
+//   rl::save_image("out.tga", renderer.frame());
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "07_normal_mapping/scene.hpp"
+#include "fast_triangle.hpp"
+#include "material.hpp"
+#include "tile_kernels.hpp"
+
+namespace fast {
+
+struct FastOptions {
+    int threads = 0;                       // 0: every core
+    int tile_size = 64;                    // pixels per side, a multiple of 8
+    normal_mapping::RenderOptions render;  // lesson 07's shading options and its pipeline's
+};
+
+// Where a frame's time went, in milliseconds, from timers around each stage.
+struct StageTimes {
+    double vertex = 0, setup = 0, binning = 0, tiles = 0;
+};
+
+struct FrameCounts {
+    std::size_t vertices = 0;  // vertex-stage runs (distinct vertices of the models drawn)
+    std::size_t faces = 0;     // faces of the models drawn
+    std::size_t back_faces = 0, clipped = 0, outside = 0, refused = 0;
+    std::size_t triangles = 0;  // set up and binned
+    std::size_t objects_culled = 0;
+    TileCounts tiles;  // summed over the tiles
+};
+
+// A model as the fast path draws it: distinct vertices (each one corner that
+// stands for all the corners sharing its position, uv, normal and tangent),
+// each face as three indices into them, and the maps packed for gathers.
+struct FastModel {
+    const normal_mapping::MappedModel* source;
+    std::vector<std::uint32_t> indices;         // 3 per face
+    std::vector<std::uint32_t> representative;  // per vertex: face * 3 + corner
+    std::unique_ptr<PackedTexture> albedo, tangent_map, object_map, specular_map;
+};
+FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions& options);
+
+class Renderer {
+  public:
+    Renderer(const std::vector<normal_mapping::MappedModel>& models, int width, int height,
+             const FastOptions& options);
+    ~Renderer();
+    FrameCounts render(const perspective::Camera& camera);
+    const rl::Image& frame() const { return frame_; }
+    const StageTimes& times() const { return times_; }
+    int threads() const;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    rl::Image frame_;
+    StageTimes times_;
+};
+
+}  // namespace fast

@@ -1,0 +1,64 @@
+// The per-tile work of the fast path, in SIMD (Google Highway, chosen at run
+// time for this CPU, with a portable fallback): rasterize a tile's triangles
+// into its depth and triangle-id buffers (the visibility buffer), shade each
+// visible pixel once, and copy the tile into the frame. Tile buffers are laid
+// out in 8x8 blocks (pixel (x, y) of the tile at block (x/8, y/8), slot
+// (y%8)*8 + x%8), so a block's pixels sit side by side in memory.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "fast_triangle.hpp"
+#include "hwy/aligned_allocator.h"
+#include "material.hpp"
+#include "rasterlab/image.hpp"
+
+namespace fast {
+
+inline constexpr int kBlock = 8;
+
+// A tile's own buffers, reused from tile to tile by one thread.
+struct TileBuffers {
+    explicit TileBuffers(int tile_size);
+    int size;
+    std::size_t pixels;  // size * size
+    // Aligned for the widest vector loads.
+    hwy::AlignedFreeUniquePtr<float[]> depth;
+    hwy::AlignedFreeUniquePtr<std::uint32_t[]>
+        id;  // index into the frame's triangles, or kNoTriangle
+    hwy::AlignedFreeUniquePtr<std::uint32_t[]> colour;  // RGBA bytes, as rl::Rgba
+};
+inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+
+struct TileWork {
+    int x0, y0;         // the tile's lower-left pixel in the frame
+    int width, height;  // its pixels within the frame (<= the tile size)
+    const std::vector<FastTriangle>* triangles;
+    const std::uint32_t* bin;  // the tile's triangles, in drawing order
+    std::size_t bin_size;
+    const Material* materials;  // per model
+};
+
+struct TileCounts {
+    std::uint64_t blocks_rejected = 0, blocks_full = 0, blocks_partial = 0;
+    std::uint64_t depth_passed = 0;  // samples that passed the depth test (overdraw included)
+    std::uint64_t shaded = 0;        // pixels shaded (each visible pixel once)
+};
+
+// Clears the tile, rasterizes its bin (depth test `less`, the first triangle
+// drawn wins a tie, as lesson 07's), shades the winners and writes the tile
+// into `frame`.
+void render_tile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, TileCounts& counts);
+
+// Only the visibility pass: the tile's depth and ids (for the tests and the lab).
+void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& counts);
+
+// The SIMD sRGB encoding of linear values, for a test to hold against
+// lesson 06's encode(): bytes[i] for values[i], count a multiple of nothing.
+void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count);
+
+// The name of the instruction set the kernels run with on this CPU.
+const char* simd_target();
+
+}  // namespace fast
