@@ -12,6 +12,7 @@
 #include "07_normal_mapping/mapped_cli.hpp"
 #include "orbit.hpp"
 #include "rasterlab/image_io.hpp"
+#include "rasterlab/image_metrics.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "renderer.hpp"
 #ifdef RASTERLAB_LLVMPIPE
@@ -42,12 +43,15 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(8, 1024));
     app.add_flag("!--no-peer", peer, "Do not time Mesa's llvmpipe on the same frames");
+    std::string peer_output;
+    app.add_option("--peer-output", peer_output, "Also write llvmpipe's last frame here");
     CLI11_PARSE(app, argc, argv);
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 
     return rl::guarded_main("12_fast", [&] {
         rl::check_image_output(output);
+        if (!peer_output.empty()) rl::check_image_output(peer_output);
         options.render = cli.options;
         normal_mapping::MappedScene scene =
             normal_mapping::load_scene(cli, width, height, "12_fast");
@@ -78,9 +82,14 @@ int main(int argc, char** argv) {
         for (int i = 0; i < frames; ++i)
             peer_times.push_back(llvmpipe.render(fast::orbit(scene.camera, i, frames)));
         const double peer_ms = fast::median_after_first(peer_times);
+        const rl::Image peer_frame = llvmpipe.frame();
+        const rl::ImageDiff diff = rl::compare_images(renderer.frame(), peer_frame, 8);
         std::printf(
-            "llvmpipe (Mesa %s, %d threads): median %.2f ms per frame; ours takes %.2fx its time\n",
-            llvmpipe.version().c_str(), renderer.threads(), peer_ms, ms / peer_ms);
+            "llvmpipe (%s) on %d threads: median %.2f ms per frame; ours takes %.2fx its time; "
+            "%.3f%% of pixels differ by more than 8/255\n",
+            llvmpipe.version().c_str(), renderer.threads(), peer_ms, ms / peer_ms,
+            100.0 * diff.share_over);
+        if (!peer_output.empty()) rl::save_image(peer_output, peer_frame);
 #else
         std::printf("llvmpipe peer skipped: built without OSMesa (libosmesa6-dev)\n");
 #endif

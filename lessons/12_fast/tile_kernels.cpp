@@ -561,7 +561,7 @@ void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, Ti
             const std::size_t slot =
                 static_cast<std::size_t>((y / kBlock) * blocks_per_row + x / kBlock) * 64 +
                 static_cast<std::size_t>((y % kBlock) * kBlock + x % kBlock);
-            std::memcpy(row + x, &buffers.colour[slot], 4);
+            std::memcpy(static_cast<void*>(row + x), &buffers.colour[slot], 4);
         }
     }
 }

@@ -1,0 +1,48 @@
+// The peer lesson 12 is measured against: Mesa's llvmpipe, a conformant
+// OpenGL implementation that JIT-compiles shaders to SIMD code and rasterizes
+// 64x64 tiles on several threads, drawing lesson 07's scene off screen
+// (OSMesa) with a GLSL 3.3 shader that does what lesson 07's shader does:
+// the same meshes (indexed as the fast path indexes them), the same mip
+// levels of the same maps, the same camera matrices and lights.
+//
+//   fast::LlvmpipePeer peer(800, 800, 2);   // LP_NUM_THREADS = 2
+//   peer.upload(models, options);           // outside the timed loop
+//   const double ms = peer.render(camera);  // one frame, glFinish included
+//   const rl::Image picture = peer.frame();
+#pragma once
+
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "07_normal_mapping/scene.hpp"
+
+namespace fast {
+
+// Thrown when no OpenGL 3.3 context can be made (the program then says the
+// peer is skipped).
+struct PeerUnavailable : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+class LlvmpipePeer {
+  public:
+    LlvmpipePeer(int width, int height, int threads);
+    ~LlvmpipePeer();
+    LlvmpipePeer(const LlvmpipePeer&) = delete;
+    LlvmpipePeer& operator=(const LlvmpipePeer&) = delete;
+
+    void upload(const std::vector<normal_mapping::MappedModel>& models,
+                const normal_mapping::RenderOptions& options);
+    // Draws one frame and waits for it (glFinish); returns its milliseconds.
+    double render(const perspective::Camera& camera);
+    rl::Image frame() const;      // the last frame, bottom row first
+    std::string version() const;  // GL_VERSION and GL_RENDERER
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace fast
