@@ -74,6 +74,13 @@ int main(int argc, char** argv) {
             frames, width, height, renderer.threads(), fast::simd_target(), ms, counts.triangles,
             static_cast<double>(counts.triangles) / ms / 1e3,
             static_cast<double>(counts.tiles.shaded) / ms / 1e3, output.c_str());
+        const fast::StageTimes& t = renderer.times();
+        std::printf(
+            "last frame: vertex %.2f ms, setup %.2f, binning %.2f, tiles %.2f; %.0f%% of the "
+            "shader's lanes used\n",
+            t.vertex, t.setup, t.binning, t.tiles,
+            100.0 * static_cast<double>(counts.tiles.shaded) /
+                static_cast<double>(std::max<std::uint64_t>(counts.tiles.lanes, 1)));
         if (!peer) return 0;
 #ifdef RASTERLAB_LLVMPIPE
         fast::LlvmpipePeer llvmpipe(width, height, renderer.threads());

@@ -1,13 +1,15 @@
 #include "packed_texture.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 
 namespace fast {
 
-PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels)
-    : levels(all_levels ? chain.levels() : 1) {
+PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
+                             const textures::TexelEncoding* encoding)
+    : decoded(encoding != nullptr), levels(all_levels ? chain.levels() : 1) {
     if (levels > kMaxLevels) throw std::invalid_argument("a texture with more than 32 mip levels");
     std::size_t total = 0;
     for (int i = 0; i < levels; ++i)
@@ -25,7 +27,20 @@ PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels)
             level_offset[i] = static_cast<std::int32_t>(at);
             const std::vector<rl::Rgba>& pixels = image.pixels();
             static_assert(sizeof(rl::Rgba) == sizeof(std::uint32_t));
-            std::memcpy(texels.data() + at, pixels.data(), pixels.size() * sizeof(rl::Rgba));
+            if (!encoding) {
+                std::memcpy(static_cast<void*>(texels.data() + at), pixels.data(),
+                            pixels.size() * sizeof(rl::Rgba));
+            } else {
+                blue_words.resize(total);
+                const auto wide = [&](std::uint8_t byte) {
+                    return static_cast<std::uint32_t>(
+                        std::lround(encoding->value[byte] * 65535.0f));
+                };
+                for (std::size_t p = 0; p < pixels.size(); ++p) {
+                    texels[at + p] = wide(pixels[p].r) | wide(pixels[p].g) << 16;
+                    blue_words[at + p] = wide(pixels[p].b);
+                }
+            }
             at += pixels.size();
         } else {
             level_offset[i] = level_offset[levels - 1];

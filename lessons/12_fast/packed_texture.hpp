@@ -19,8 +19,16 @@ namespace fast {
 struct PackedTexture {
     static constexpr int kMaxLevels = 32;  // a 2^31-texel side has 32 levels
     // Every level, or level 0 alone (for the filters that read no other).
-    explicit PackedTexture(const textures::MipChain& chain, bool all_levels = true);
+    // With an encoding (sRGB colour textures), the texels are stored decoded
+    // instead: each channel's value in 16 bits, red and green in one word and
+    // blue in another, so that a lookup gathers two words and no table (the
+    // values are within 1/131070 of the encoding's, far below what a byte
+    // of output can show).
+    explicit PackedTexture(const textures::MipChain& chain, bool all_levels = true,
+                           const textures::TexelEncoding* encoding = nullptr);
     std::vector<std::uint32_t> texels;  // level 0, then 1, ...; rows bottom first
+    bool decoded = false;               // texels hold red | green << 16, blue_words blue
+    std::vector<std::uint32_t> blue_words;
     // Per level (padded to kMaxLevels with the last level, so that a gather
     // with a clamped index never reads past the table):
     std::int32_t level_offset[kMaxLevels], level_width[kMaxLevels], level_height[kMaxLevels];

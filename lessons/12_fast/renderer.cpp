@@ -62,7 +62,10 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
             out.indices[corner] = at->second;
         }
     const bool all_levels = options.render.filter == textures::Filter::trilinear;
-    out.albedo = std::make_unique<PackedTexture>(model.lit.model.texture, all_levels);
+    // The diffuse texture holds sRGB colours unless the output is naive (lesson 06).
+    out.albedo = std::make_unique<PackedTexture>(
+        model.lit.model.texture, all_levels,
+        options.render.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr);
     out.tangent_map = packed(model.maps.tangent_normals, all_levels);
     out.object_map = packed(model.maps.object_normals, all_levels);
     out.specular_map = packed(model.maps.specular, all_levels);
@@ -328,6 +331,7 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         counts.tiles.blocks_partial += c.blocks_partial;
         counts.tiles.depth_passed += c.depth_passed;
         counts.tiles.shaded += c.shaded;
+        counts.tiles.lanes += c.lanes;
     }
     return counts;
 }

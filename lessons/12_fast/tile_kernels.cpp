@@ -5,6 +5,7 @@
 // that each line works on a vector of pixels. Derivations: docs/12_fast.md.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstring>
 #include <limits>
 
@@ -223,13 +224,20 @@ HWY_INLINE Vec3 add(const Vec3& a, const Vec3& b) {
 HWY_INLINE Vec3 select(MF m, const Vec3& a, const Vec3& b) {
     return {hn::IfThenElse(m, a.x, b.x), hn::IfThenElse(m, a.y, b.y), hn::IfThenElse(m, a.z, b.z)};
 }
+// 1 / sqrt(x) to within a float's last bit or two: the estimate the CPU
+// gives (12 or 14 bits) and one Newton step, in place of a square root and a
+// division (several times cheaper; the byte written is the same but for a
+// pixel in tens of thousands, inside lesson 07's golden tolerance).
+HWY_INLINE VF inverse_sqrt(DF df, VF x) {
+    const VF y = hn::ApproximateReciprocalSqrt(x);
+    const VF half_x = hn::Mul(x, hn::Set(df, 0.5f));
+    return hn::Mul(y, hn::NegMulAdd(half_x, hn::Mul(y, y), hn::Set(df, 1.5f)));
+}
 // rl::normalize: v / |v|, the zero vector left zero.
 HWY_INLINE Vec3 normalize(DF df, const Vec3& v) {
     const VF squared = dot(v, v);
-    const MF nonzero = hn::Gt(squared, hn::Zero(df));
-    const VF length = hn::Sqrt(squared);
-    const VF safe = hn::IfThenElse(nonzero, length, hn::Set(df, 1.0f));
-    return {hn::Div(v.x, safe), hn::Div(v.y, safe), hn::Div(v.z, safe)};
+    const VF inverse = hn::IfThenElseZero(hn::Gt(squared, hn::Zero(df)), inverse_sqrt(df, squared));
+    return scale(v, inverse);
 }
 HWY_INLINE Vec3 cross(const Vec3& a, const Vec3& b) {
     return {hn::Sub(hn::Mul(a.y, b.z), hn::Mul(a.z, b.y)),
@@ -240,21 +248,34 @@ HWY_INLINE Vec3 broadcast(DF df, const float* v) {
     return {hn::Set(df, v[0]), hn::Set(df, v[1]), hn::Set(df, v[2])};
 }
 
-// A texel's channels as values in [0, 1]: through the sRGB table, or byte / 255.
+// A texel's channels as values in [0, 1]: byte / 255, or for a decoded
+// texture the 16-bit values.
 struct Texel {
     VF c[3];
 };
-HWY_INLINE VF channel(DF df, VU texel, int shift, const float* srgb) {
-    const DI di;
-    const VI byte =
-        hn::BitCast(di, hn::And(hn::ShiftRightSame(texel, shift), hn::Set(DU(), 0xffu)));
-    if (srgb) return hn::GatherIndex(df, srgb, byte);
-    return hn::Div(hn::ConvertTo(df, byte), hn::Set(df, 255.0f));
-}
-HWY_INLINE VU fetch(DF df, const PackedTexture& t, VI index) {
-    (void)df;
+struct Fetched {
+    VU word, blue;  // blue: decoded textures only
+};
+HWY_INLINE VU gather_words(const std::vector<std::uint32_t>& words, VI index) {
     return hn::BitCast(
-        DU(), hn::GatherIndex(DI(), reinterpret_cast<const std::int32_t*>(t.texels.data()), index));
+        DU(), hn::GatherIndex(DI(), reinterpret_cast<const std::int32_t*>(words.data()), index));
+}
+HWY_INLINE Fetched fetch(const PackedTexture& t, VI index, int channels) {
+    Fetched f{gather_words(t.texels, index), hn::Zero(DU())};
+    if (t.decoded && channels > 2) f.blue = gather_words(t.blue_words, index);
+    return f;
+}
+HWY_INLINE VF channel(DF df, const PackedTexture& t, const Fetched& f, int c) {
+    const DI di;
+    if (t.decoded) {
+        const VU word = c == 0 ? hn::And(f.word, hn::Set(DU(), 0xffffu))
+                        : c == 1 ? hn::ShiftRight<16>(f.word)
+                                 : f.blue;
+        return hn::Mul(hn::ConvertTo(df, hn::BitCast(di, word)), hn::Set(df, 1.0f / 65535));
+    }
+    const VI byte =
+        hn::BitCast(di, hn::And(hn::ShiftRightSame(f.word, 8 * c), hn::Set(DU(), 0xffu)));
+    return hn::Mul(hn::ConvertTo(df, byte), hn::Set(df, 1.0f / 255));
 }
 
 // Lesson 04's wrap `repeat` for an index within one period of the texture.
@@ -266,7 +287,7 @@ HWY_INLINE VI wrap(VI i, VI size) {
 
 // Bilinear (or nearest) lookup in one level per lane, `channels` of them.
 HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF v, bool bilinear,
-                              int channels, const float* srgb) {
+                              int channels) {
     const DI di;
     const VI width = hn::GatherIndex(di, t.level_width, level);
     const VI height = hn::GatherIndex(di, t.level_height, level);
@@ -279,8 +300,8 @@ HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF 
     if (!bilinear) {
         const VI i = wrap(hn::ConvertTo(di, hn::Floor(s)), width);
         const VI j = wrap(hn::ConvertTo(di, hn::Floor(tt)), height);
-        const VU texel = fetch(df, t, hn::Add(offset, hn::Add(hn::Mul(j, width), i)));
-        for (int c = 0; c < channels; ++c) out.c[c] = channel(df, texel, 8 * c, srgb);
+        const Fetched texel = fetch(t, hn::Add(offset, hn::Add(hn::Mul(j, width), i)), channels);
+        for (int c = 0; c < channels; ++c) out.c[c] = channel(df, t, texel, c);
         return out;
     }
     const VF x = hn::Sub(s, hn::Set(df, 0.5f)), y = hn::Sub(tt, hn::Set(df, 0.5f));
@@ -291,14 +312,16 @@ HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF 
     const VI x0 = wrap(i, width), x1 = wrap(hn::Add(i, one), width);
     const VI row0 = hn::Add(offset, hn::Mul(wrap(j, height), width));
     const VI row1 = hn::Add(offset, hn::Mul(wrap(hn::Add(j, one), height), width));
-    const VU t00 = fetch(df, t, hn::Add(row0, x0)), t10 = fetch(df, t, hn::Add(row0, x1));
-    const VU t01 = fetch(df, t, hn::Add(row1, x0)), t11 = fetch(df, t, hn::Add(row1, x1));
+    const Fetched t00 = fetch(t, hn::Add(row0, x0), channels);
+    const Fetched t10 = fetch(t, hn::Add(row0, x1), channels);
+    const Fetched t01 = fetch(t, hn::Add(row1, x0), channels);
+    const Fetched t11 = fetch(t, hn::Add(row1, x1), channels);
     const VF gx = hn::Sub(hn::Set(df, 1.0f), fx), gy = hn::Sub(hn::Set(df, 1.0f), fy);
     for (int c = 0; c < channels; ++c) {
-        const VF bottom = hn::Add(hn::Mul(channel(df, t00, 8 * c, srgb), gx),
-                                  hn::Mul(channel(df, t10, 8 * c, srgb), fx));
-        const VF top = hn::Add(hn::Mul(channel(df, t01, 8 * c, srgb), gx),
-                               hn::Mul(channel(df, t11, 8 * c, srgb), fx));
+        const VF bottom = hn::Add(hn::Mul(channel(df, t, t00, c), gx),
+                                  hn::Mul(channel(df, t, t10, c), fx));
+        const VF top = hn::Add(hn::Mul(channel(df, t, t01, c), gx),
+                               hn::Mul(channel(df, t, t11, c), fx));
         out.c[c] = hn::Add(hn::Mul(bottom, gy), hn::Mul(top, fy));
     }
     return out;
@@ -308,34 +331,36 @@ HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF 
 // of its longer side in texels of level 0), trilinear between two levels.
 // A lane whose coordinates are not finite gets the border colour (0, 0, 0).
 HWY_INLINE Texel sample(DF df, const PackedTexture& t, VF u, VF v, VF du_dx, VF dv_dx, VF du_dy,
-                        VF dv_dy, textures::Filter filter, int channels, const float* srgb) {
+                        VF dv_dy, textures::Filter filter, int channels) {
     const DI di;
     const MF finite = hn::And(hn::IsFinite(u), hn::IsFinite(v));
     u = hn::IfThenElseZero(finite, u), v = hn::IfThenElseZero(finite, v);
     Texel out;
     if (filter != textures::Filter::trilinear) {
         out = sample_level(df, t, hn::Zero(di), u, v, filter == textures::Filter::bilinear,
-                           channels, srgb);
+                           channels);
     } else {
         const VF w = hn::Set(df, static_cast<float>(t.level_width[0]));
         const VF h = hn::Set(df, static_cast<float>(t.level_height[0]));
         const VF ax = hn::Mul(du_dx, w), ay = hn::Mul(dv_dx, h);
         const VF bx = hn::Mul(du_dy, w), by = hn::Mul(dv_dy, h);
-        const VF along_x = hn::Sqrt(hn::MulAdd(ay, ay, hn::Mul(ax, ax)));
-        const VF along_y = hn::Sqrt(hn::MulAdd(by, by, hn::Mul(bx, bx)));
-        VF lod = hn::Log2(df, hn::Max(hn::Max(along_x, along_y), hn::Set(df, 1e-20f)));
+        // log2 of the longer side = half the log2 of its square: no square roots.
+        const VF along_x = hn::MulAdd(ay, ay, hn::Mul(ax, ax));
+        const VF along_y = hn::MulAdd(by, by, hn::Mul(bx, bx));
+        VF lod = hn::Mul(hn::Set(df, 0.5f),
+                         hn::Log2(df, hn::Max(hn::Max(along_x, along_y), hn::Set(df, 1e-30f))));
         lod = hn::IfThenElseZero(hn::IsFinite(lod), lod);
         lod = hn::Min(hn::Max(lod, hn::Zero(df)), hn::Set(df, static_cast<float>(t.levels - 1)));
         const VF lower_f = hn::Floor(lod);
         const VI lower = hn::ConvertTo(di, lower_f);
         const VI upper = hn::Min(hn::Add(lower, hn::Set(di, 1)), hn::Set(di, t.levels - 1));
         const VF blend = hn::Sub(lod, lower_f);
-        const Texel a = sample_level(df, t, lower, u, v, true, channels, srgb);
+        const Texel a = sample_level(df, t, lower, u, v, true, channels);
         const MF needs_upper = hn::Gt(blend, hn::Zero(df));
         if (hn::AllFalse(df, needs_upper)) {
             out = a;
         } else {
-            const Texel b = sample_level(df, t, upper, u, v, true, channels, srgb);
+            const Texel b = sample_level(df, t, upper, u, v, true, channels);
             const VF keep = hn::Sub(hn::Set(df, 1.0f), blend);
             for (int c = 0; c < channels; ++c)
                 out.c[c] = hn::IfThenElse(
@@ -352,7 +377,19 @@ HWY_INLINE Texel sample(DF df, const PackedTexture& t, VF u, VF v, VF du_dx, VF 
 // pow(0, 0) = 1.
 HWY_INLINE VF highlight(DF df, VF alignment, float shininess) {
     const VF base = hn::Max(alignment, hn::Zero(df));
-    const VF power = hn::Exp(df, hn::Mul(hn::Set(df, shininess), hn::Log(df, base)));
+    VF power;
+    if (shininess >= 1 && shininess <= 1024 && shininess == std::floor(shininess)) {
+        // A whole exponent (lesson 06's 32): by repeated squaring, a few
+        // multiplications in place of a logarithm and an exponential.
+        power = hn::Set(df, 1.0f);
+        VF square = base;
+        for (unsigned e = static_cast<unsigned>(shininess); e != 0; e >>= 1) {
+            if (e & 1) power = hn::Mul(power, square);
+            if (e > 1) square = hn::Mul(square, square);
+        }
+    } else {
+        power = hn::Exp(df, hn::Mul(hn::Set(df, shininess), hn::Log(df, base)));
+    }
     return hn::IfThenElse(hn::Gt(base, hn::Zero(df)), power,
                           hn::Set(df, shininess == 0 ? 1.0f : 0.0f));
 }
@@ -368,8 +405,8 @@ const std::int32_t* first_bytes() {
     return table.data();
 }
 
-// Lesson 06's encode(): the nearest sRGB byte by lesson 06's tables (at most
-// two steps from where the 4096-slice table starts), or the naive byte.
+// Lesson 06's encode(): the nearest sRGB byte by lesson 06's tables, or the
+// naive byte.
 HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
     const DI di;
     if (!srgb) {
@@ -384,11 +421,9 @@ HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
     const VF clamped = hn::IfThenElseZero(hn::And(positive, below_one), value);
     const VI slice = hn::ConvertTo(di, hn::Mul(clamped, hn::Set(df, 4096.0f)));
     VI b = hn::GatherIndex(di, first_bytes(), slice);
-    for (int step = 0; step < 2; ++step) {
-        const VF next = hn::GatherIndex(df, tables.steps.data(), b);
-        b = hn::IfThenElse(hn::RebindMask(di, hn::Ge(clamped, next)), hn::Add(b, hn::Set(di, 1)),
-                           b);
-    }
+    // No slice holds more than one step: one comparison finishes the search.
+    const VF next = hn::GatherIndex(df, tables.steps.data(), b);
+    b = hn::IfThenElse(hn::RebindMask(di, hn::Ge(clamped, next)), hn::Add(b, hn::Set(di, 1)), b);
     b = hn::IfThenElseZero(hn::RebindMask(di, positive), b);
     return hn::IfThenElse(hn::RebindMask(di, hn::And(positive, hn::Not(below_one))),
                           hn::Set(di, 255), b);
@@ -424,13 +459,15 @@ HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&
     Vec3 n = normalize(df, normal);
     if (m.normal_source != NormalSource::interpolated) {
         const Texel texel =
-            sample(df, *m.normal_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 3, nullptr);
+            sample(df, *m.normal_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 3);
         const VF two = hn::Set(df, 2.0f), one = hn::Set(df, 1.0f);
         const Vec3 map{hn::Sub(hn::Mul(two, texel.c[0]), one),
                        hn::Sub(hn::Mul(two, texel.c[1]), one),
                        hn::Sub(hn::Mul(two, texel.c[2]), one)};
-        const VF length = hn::Sqrt(dot(map, map));
-        const MF usable = hn::Ge(length, hn::Set(df, normal_mapping::kShortestMapNormal));
+        const VF squared = dot(map, map);
+        const MF usable = hn::Ge(squared, hn::Set(df, normal_mapping::kShortestMapNormal *
+                                                          normal_mapping::kShortestMapNormal));
+        const VF inverse_length = inverse_sqrt(df, hn::Max(squared, hn::Set(df, 1e-12f)));
         Vec3 mapped;
         if (m.normal_source == NormalSource::tangent_map) {
             const Vec3 tt = normalize(df, sub(tangent, scale(n, dot(n, tangent))));
@@ -438,7 +475,7 @@ HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&
                 hn::IfThenElse(hn::Lt(handedness, hn::Zero(df)), hn::Set(df, -1.0f), one);
             const Vec3 bt = scale(cross(n, tt), sign);
             const Vec3 sum = add(add(scale(tt, map.x), scale(bt, map.y)), scale(n, map.z));
-            mapped = {hn::Div(sum.x, length), hn::Div(sum.y, length), hn::Div(sum.z, length)};
+            mapped = scale(sum, inverse_length);
         } else {
             const float* r = m.normal_matrix;
             mapped = normalize(
@@ -487,14 +524,13 @@ HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&
         shine = hn::Zero(df);
         if (!hn::AllFalse(df, bright)) {
             const Texel s = sample(df, *m.specular_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter,
-                                   1, nullptr);
+                                   1);
             shine = hn::IfThenElseZero(bright, s.c[0]);
         }
     }
     Vec3 albedo;
     if (m.albedo) {
-        const float* srgb = m.srgb ? shading::srgb_texels().value.data() : nullptr;
-        const Texel a = sample(df, *m.albedo, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 3, srgb);
+        const Texel a = sample(df, *m.albedo, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 3);
         albedo = {a.c[0], a.c[1], a.c[2]};
     } else {
         albedo = broadcast(df, m.colour);
@@ -512,37 +548,69 @@ HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&
                   hn::Or(hn::ShiftLeft<16>(blue), hn::Set(du, 0xff000000u)));
 }
 
+// Shades each pixel the visibility pass gave a triangle, one full vector at
+// a time: the triangle's pixels in the tile are queued (compressed into
+// consecutive lanes) and shaded N at once, so that a vector is full even where
+// the triangle covers a few pixels of each block.
 void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DF df;
     const DU du;
     const std::size_t n = hn::Lanes(df);
     const int blocks_per_row = buffers.size / kBlock;
     const std::vector<FastTriangle>& triangles = *work.triangles;
+    const SlotTables& s = slots();
+    // The queue: tile slots and tile-relative pixel positions; room for one
+    // vector more than it ever keeps, as CompressStore writes a whole vector.
+    alignas(64) std::uint32_t queue_slot[2 * hn::MaxLanes(du)] = {};
+    alignas(64) float queue_x[2 * hn::MaxLanes(df)] = {}, queue_y[2 * hn::MaxLanes(df)] = {};
+    alignas(64) std::uint32_t shaded[hn::MaxLanes(du)];
+    std::uint32_t* colour = buffers.colour.get();
     for (std::size_t i = 0; i < work.bin_size; ++i) {
         const std::uint32_t index = work.bin[i];
         const FastTriangle& t = triangles[index];
         const Material& material = work.materials[t.model];
         const BlockRange r = blocks_of(t, work);
+        if (r.first_x > r.last_x) continue;
+        // The weights, exact at the tile's first pixel, stepped from there.
+        const BlockWeights w = block_weights(t, work.x0, work.y0);
+        std::size_t queued = 0;
+        const auto shade_queued = [&](std::size_t count) {
+            const VF x = hn::Load(df, queue_x), y = hn::Load(df, queue_y);
+            VF b[3];
+            for (int k = 0; k < 3; ++k)
+                b[k] = hn::MulAdd(y, hn::Set(df, w.dy[k]),
+                                  hn::MulAdd(x, hn::Set(df, w.dx[k]), hn::Set(df, w.origin[k])));
+            hn::Store(shade(df, material, t, b), du, shaded);
+            for (std::size_t lane = 0; lane < count; ++lane) colour[queue_slot[lane]] = shaded[lane];
+            counts.shaded += count;
+            counts.lanes += n;
+        };
         for (int by = r.first_y; by <= r.last_y; ++by)
             for (int bx = r.first_x; bx <= r.last_x; ++bx) {
-                const std::size_t base = static_cast<std::size_t>(by * blocks_per_row + bx) * 64;
+                const std::uint32_t base = static_cast<std::uint32_t>(by * blocks_per_row + bx) * 64;
                 const std::uint32_t* id = buffers.id.get() + base;
-                std::uint32_t* colour = buffers.colour.get() + base;
-                const int ox = work.x0 + bx * kBlock, oy = work.y0 + by * kBlock;
-                bool weights_ready = false;
-                BlockWeights w{};
+                const VF block_x = hn::Set(df, static_cast<float>(bx * kBlock));
+                const VF block_y = hn::Set(df, static_cast<float>(by * kBlock));
                 for (int first = 0; first < 64; first += static_cast<int>(n)) {
                     const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
                     if (hn::AllFalse(du, mine)) continue;
-                    if (!weights_ready) w = block_weights(t, ox, oy), weights_ready = true;
-                    VF b[3];
-                    weights_at(df, w, first, b);
-                    const VU rgba = shade(df, material, t, b);
-                    counts.shaded += hn::CountTrue(du, mine);
-                    hn::Store(hn::IfThenElse(mine, rgba, hn::Load(du, colour + first)), du,
-                              colour + first);
+                    const auto mine_f = hn::RebindMask(df, mine);
+                    hn::CompressStore(hn::Iota(du, base + static_cast<std::uint32_t>(first)), mine,
+                                      du, queue_slot + queued);
+                    hn::CompressStore(hn::Add(hn::Load(df, s.column + first), block_x), mine_f,
+                                      df, queue_x + queued);
+                    queued += hn::CompressStore(hn::Add(hn::Load(df, s.row + first), block_y),
+                                                mine_f, df, queue_y + queued);
+                    if (queued >= n) {
+                        shade_queued(n);
+                        queued -= n;
+                        std::copy_n(queue_slot + n, queued, queue_slot);
+                        std::copy_n(queue_x + n, queued, queue_x);
+                        std::copy_n(queue_y + n, queued, queue_y);
+                    }
                 }
             }
+        if (queued > 0) shade_queued(queued);
     }
 }
 

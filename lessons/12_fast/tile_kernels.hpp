@@ -44,6 +44,7 @@ struct TileCounts {
     std::uint64_t blocks_rejected = 0, blocks_full = 0, blocks_partial = 0;
     std::uint64_t depth_passed = 0;  // samples that passed the depth test (overdraw included)
     std::uint64_t shaded = 0;        // pixels shaded (each visible pixel once)
+    std::uint64_t lanes = 0;         // SIMD lanes the shader ran on (shaded / lanes: the lanes' use)
 };
 
 // Clears the tile, rasterizes its bin (depth test `less`, the first triangle
