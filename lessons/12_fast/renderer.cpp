@@ -119,7 +119,8 @@ struct Renderer::Impl {
                      {},
                      {}},
                     shading::Surface(m.lit.model.mesh, m.lit.normals, m.lit.model.transform)};
-            clip.emplace_back(models.back().representative.size());
+            clip.emplace_back(o.vertex_cache ? models.back().representative.size()
+                                             : models.back().indices.size());
             materials.push_back(material_for(models.back(), placed.back()));
         }
         drawn.resize(models.size());
@@ -214,21 +215,35 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         const FastModel& m = s.models[i];
         const bool mirrored = p.surface.view.mirrored;
         std::vector<perspective::ClipVertex<Varyings>>& out = s.clip[i];
-        counts.vertices += m.representative.size();
         counts.faces += m.indices.size() / 3;
-        s.arena.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, m.representative.size(), 1024),
-                              [&](const tbb::blocked_range<std::size_t>& range) {
-                                  for (std::size_t v = range.begin(); v != range.end(); ++v) {
-                                      const int face = static_cast<int>(m.representative[v] / 3);
-                                      const int corner = static_cast<int>(m.representative[v] % 3);
-                                      // The surface hands corner k over as (3 - k) % 3 when
-                                      // mirrored.
-                                      const int k = mirrored ? (3 - corner) % 3 : corner;
-                                      out[v] = shader.vertex(p.surface.corner(face, k));
-                                  }
-                              });
-        });
+        const auto run = [&](std::size_t count, auto&& vertex) {
+            counts.vertices += count;
+            if (!s.options.parallel) {
+                for (std::size_t v = 0; v < count; ++v) vertex(v);
+                return;
+            }
+            s.arena.execute([&] {
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
+                                  [&](const tbb::blocked_range<std::size_t>& range) {
+                                      for (std::size_t v = range.begin(); v != range.end(); ++v)
+                                          vertex(v);
+                                  });
+            });
+        };
+        if (s.options.vertex_cache) {
+            run(m.representative.size(), [&](std::size_t v) {
+                const int face = static_cast<int>(m.representative[v] / 3);
+                const int corner = static_cast<int>(m.representative[v] % 3);
+                // The surface hands corner k over as (3 - k) % 3 when mirrored.
+                const int k = mirrored ? (3 - corner) % 3 : corner;
+                out[v] = shader.vertex(p.surface.corner(face, k));
+            });
+        } else {  // every corner of every face, in the surface's order
+            run(m.indices.size(), [&](std::size_t c) {
+                out[c] = shader.vertex(
+                    p.surface.corner(static_cast<int>(c / 3), static_cast<int>(c % 3)));
+            });
+        }
     }
     times_.vertex = milliseconds_since(start);
 
@@ -249,10 +264,14 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
         const std::size_t faces = m.indices.size() / 3;
         for (std::size_t f = 0; f < faces; ++f) {
-            const std::uint32_t* index = &m.indices[3 * f];
-            const std::array<perspective::ClipVertex<Varyings>, 3> v = {
-                vertices[index[0]], vertices[index[mirrored ? 2 : 1]],
-                vertices[index[mirrored ? 1 : 2]]};
+            std::array<perspective::ClipVertex<Varyings>, 3> v;
+            if (s.options.vertex_cache) {
+                const std::uint32_t* index = &m.indices[3 * f];
+                v = {vertices[index[0]], vertices[index[mirrored ? 2 : 1]],
+                     vertices[index[mirrored ? 1 : 2]]};
+            } else {
+                v = {vertices[3 * f], vertices[3 * f + 1], vertices[3 * f + 2]};
+            }
             if (pipeline.cull != perspective::Cull::none) {
                 const double area =
                     perspective::facing(v[0].position, v[1].position, v[2].position);
@@ -303,32 +322,40 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
 
     // 4. The tiles, in parallel: each one rasterized, shaded and resolved by one thread.
     start = Clock::now();
-    s.arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.bins.size(), 1),
-                          [&](const tbb::blocked_range<std::size_t>& range) {
-                              TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(
-                                  tbb::this_task_arena::current_thread_index())];
-                              for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                                  const int tx = static_cast<int>(i) % s.tiles_x,
-                                            ty = static_cast<int>(i) / s.tiles_x;
-                                  TileWork work{tx * tile,
-                                                ty * tile,
-                                                std::min(tile, s.width - tx * tile),
-                                                std::min(tile, s.height - ty * tile),
-                                                &s.triangles,
-                                                s.bins[i].data(),
-                                                s.bins[i].size(),
-                                                s.materials.data()};
-                                  s.tile_counts[i] = {};
-                                  render_tile(work, buffers, frame_, s.tile_counts[i]);
-                              }
-                          });
-    });
+    const auto draw_tile = [&](std::size_t i, TileBuffers& buffers) {
+        const int tx = static_cast<int>(i) % s.tiles_x, ty = static_cast<int>(i) / s.tiles_x;
+        const TileWork work{tx * tile,
+                            ty * tile,
+                            std::min(tile, s.width - tx * tile),
+                            std::min(tile, s.height - ty * tile),
+                            &s.triangles,
+                            s.bins[i].data(),
+                            s.bins[i].size(),
+                            s.materials.data(),
+                            s.options.techniques};
+        s.tile_counts[i] = {};
+        render_tile(work, buffers, frame_, s.tile_counts[i]);
+    };
+    if (!s.options.parallel) {
+        for (std::size_t i = 0; i < s.bins.size(); ++i) draw_tile(i, *s.buffers[0]);
+    } else {
+        s.arena.execute([&] {
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.bins.size(), 1),
+                              [&](const tbb::blocked_range<std::size_t>& range) {
+                                  // Each thread of the arena has buffers of its own.
+                                  TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(
+                                      tbb::this_task_arena::current_thread_index())];
+                                  for (std::size_t i = range.begin(); i != range.end(); ++i)
+                                      draw_tile(i, buffers);
+                              });
+        });
+    }
     times_.tiles = milliseconds_since(start);
     for (const TileCounts& c : s.tile_counts) {
         counts.tiles.blocks_rejected += c.blocks_rejected;
         counts.tiles.blocks_full += c.blocks_full;
         counts.tiles.blocks_partial += c.blocks_partial;
+        counts.tiles.blocks_occluded += c.blocks_occluded;
         counts.tiles.depth_passed += c.depth_passed;
         counts.tiles.shaded += c.shaded;
         counts.tiles.lanes += c.lanes;

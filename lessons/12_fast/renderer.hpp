@@ -32,6 +32,10 @@ struct FastOptions {
     int threads = 0;                       // 0: every core
     int tile_size = 64;                    // pixels per side, a multiple of 8
     normal_mapping::RenderOptions render;  // lesson 07's shading options and its pipeline's
+    // The techniques, for the lab to turn off one at a time:
+    bool vertex_cache = true;  // the vertex function once per distinct vertex, not per corner
+    bool parallel = true;      // the vertex stage and the tiles on the threads (or on one)
+    Techniques techniques;     // the tile kernels' (tile_kernels.hpp)
 };
 
 // Where a frame's time went, in milliseconds, from timers around each stage.

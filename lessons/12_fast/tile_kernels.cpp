@@ -67,11 +67,16 @@ HWY_INLINE MF mask_of(DF df, std::uint64_t coverage, int first) {
 // outside one edge, or wholly inside all three, are decided from the
 // block's corners (the edge function is linear: its extremes over the block
 // are at corners).
-HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, TileCounts& counts) {
+HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, bool coarse,
+                                        TileCounts& counts) {
     std::int64_t origin[3];
     bool inside_all = true;
     for (int k = 0; k < 3; ++k) {
         origin[k] = t.edge_at(k, ox, oy);
+        if (!coarse) {
+            inside_all = false;
+            continue;
+        }
         // Per pixel to the right E changes by -dy * 256, per pixel up by dx * 256.
         const std::int64_t step_x = -t.edge_dy[k] * triangles::kSubpixels;
         const std::int64_t step_y = t.edge_dx[k] * triangles::kSubpixels;
@@ -80,7 +85,7 @@ HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, T
                                   span * std::max<std::int64_t>(step_y, 0);
         const std::int64_t least = origin[k] + span * std::min<std::int64_t>(step_x, 0) +
                                    span * std::min<std::int64_t>(step_y, 0);
-        if (most <= t.threshold[k]) {
+        if (most <= t.threshold[k]) {  // every centre outside this edge
             ++counts.blocks_rejected;
             return 0;
         }
@@ -159,14 +164,21 @@ HWY_INLINE BlockRange blocks_of(const FastTriangle& t, const TileWork& work) {
     return {x0 / kBlock, x1 / kBlock, y0 / kBlock, y1 / kBlock};
 }
 
+// The visibility pass: depth and the id of the nearest triangle at every
+// pixel (or, without shade_once, each passing pixel shaded at once, as
+// lesson 07 does).
+HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]);
+
 void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DF df;
     const DU du;
     const std::size_t n = hn::Lanes(df);
+    const Techniques& use = work.techniques;
     const int blocks_per_row = buffers.size / kBlock;
     std::fill(buffers.depth.get(), buffers.depth.get() + buffers.pixels,
               1.0f);  // the depth state's clear
     std::fill(buffers.id.get(), buffers.id.get() + buffers.pixels, kNoTriangle);
+    std::fill(buffers.block_far.begin(), buffers.block_far.end(), 1.0f);
     const std::vector<FastTriangle>& triangles = *work.triangles;
     for (std::size_t i = 0; i < work.bin_size; ++i) {
         const std::uint32_t index = work.bin[i];
@@ -174,13 +186,21 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
         const BlockRange r = blocks_of(t, work);
         for (int by = r.first_y; by <= r.last_y; ++by)
             for (int bx = r.first_x; bx <= r.last_x; ++bx) {
+                const std::size_t block = static_cast<std::size_t>(by * blocks_per_row + bx);
+                // The test is `less`: nothing passes where every pixel is
+                // already nearer than the triangle's nearest point.
+                if (use.hierarchical_depth && t.z_min >= buffers.block_far[block]) {
+                    ++counts.blocks_occluded;
+                    continue;
+                }
                 const int ox = work.x0 + bx * kBlock, oy = work.y0 + by * kBlock;
-                const std::uint64_t coverage = block_coverage(t, ox, oy, counts);
+                const std::uint64_t coverage = block_coverage(t, ox, oy, use.coarse_blocks, counts);
                 if (coverage == 0) continue;
                 const BlockWeights w = block_weights(t, ox, oy);
-                const std::size_t base = static_cast<std::size_t>(by * blocks_per_row + bx) * 64;
+                const std::size_t base = block * 64;
                 float* depth = buffers.depth.get() + base;
                 std::uint32_t* id = buffers.id.get() + base;
+                bool changed = false;
                 for (int first = 0; first < 64; first += static_cast<int>(n)) {
                     const MF covered = mask_of(df, coverage, first);
                     if (hn::AllFalse(df, covered)) continue;
@@ -194,11 +214,26 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                     z = hn::Min(hn::Max(z, hn::Set(df, t.z_min)), hn::Set(df, t.z_max));
                     const VF old = hn::Load(df, depth + first);
                     const MF pass = hn::And(covered, hn::Lt(z, old));
+                    if (hn::AllFalse(df, pass)) continue;
+                    changed = true;
                     counts.depth_passed += hn::CountTrue(df, pass);
                     hn::Store(hn::IfThenElse(pass, z, old), df, depth + first);
+                    const auto pass_u = hn::RebindMask(du, pass);
                     const VU old_id = hn::Load(du, id + first);
-                    hn::Store(hn::IfThenElse(hn::RebindMask(du, pass), hn::Set(du, index), old_id),
-                              du, id + first);
+                    hn::Store(hn::IfThenElse(pass_u, hn::Set(du, index), old_id), du, id + first);
+                    if (!use.shade_once) {
+                        std::uint32_t* colour = buffers.colour.get() + base + first;
+                        const VU rgba = shade(df, work.materials[t.model], t, b);
+                        hn::Store(hn::IfThenElse(pass_u, rgba, hn::Load(du, colour)), du, colour);
+                        counts.shaded += hn::CountTrue(df, pass);
+                        counts.lanes += n;
+                    }
+                }
+                if (use.hierarchical_depth && changed) {
+                    VF far = hn::Load(df, depth);
+                    for (std::size_t first = n; first < 64; first += n)
+                        far = hn::Max(far, hn::Load(df, depth + first));
+                    buffers.block_far[block] = hn::GetLane(hn::MaxOfLanes(df, far));
                 }
             }
     }
@@ -268,7 +303,7 @@ HWY_INLINE Fetched fetch(const PackedTexture& t, VI index, int channels) {
 HWY_INLINE VF channel(DF df, const PackedTexture& t, const Fetched& f, int c) {
     const DI di;
     if (t.decoded) {
-        const VU word = c == 0 ? hn::And(f.word, hn::Set(DU(), 0xffffu))
+        const VU word = c == 0   ? hn::And(f.word, hn::Set(DU(), 0xffffu))
                         : c == 1 ? hn::ShiftRight<16>(f.word)
                                  : f.blue;
         return hn::Mul(hn::ConvertTo(df, hn::BitCast(di, word)), hn::Set(df, 1.0f / 65535));
@@ -318,10 +353,10 @@ HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF 
     const Fetched t11 = fetch(t, hn::Add(row1, x1), channels);
     const VF gx = hn::Sub(hn::Set(df, 1.0f), fx), gy = hn::Sub(hn::Set(df, 1.0f), fy);
     for (int c = 0; c < channels; ++c) {
-        const VF bottom = hn::Add(hn::Mul(channel(df, t, t00, c), gx),
-                                  hn::Mul(channel(df, t, t10, c), fx));
-        const VF top = hn::Add(hn::Mul(channel(df, t, t01, c), gx),
-                               hn::Mul(channel(df, t, t11, c), fx));
+        const VF bottom =
+            hn::Add(hn::Mul(channel(df, t, t00, c), gx), hn::Mul(channel(df, t, t10, c), fx));
+        const VF top =
+            hn::Add(hn::Mul(channel(df, t, t01, c), gx), hn::Mul(channel(df, t, t11, c), fx));
         out.c[c] = hn::Add(hn::Mul(bottom, gy), hn::Mul(top, fy));
     }
     return out;
@@ -337,8 +372,8 @@ HWY_INLINE Texel sample(DF df, const PackedTexture& t, VF u, VF v, VF du_dx, VF 
     u = hn::IfThenElseZero(finite, u), v = hn::IfThenElseZero(finite, v);
     Texel out;
     if (filter != textures::Filter::trilinear) {
-        out = sample_level(df, t, hn::Zero(di), u, v, filter == textures::Filter::bilinear,
-                           channels);
+        out =
+            sample_level(df, t, hn::Zero(di), u, v, filter == textures::Filter::bilinear, channels);
     } else {
         const VF w = hn::Set(df, static_cast<float>(t.level_width[0]));
         const VF h = hn::Set(df, static_cast<float>(t.level_height[0]));
@@ -523,8 +558,8 @@ HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&
         const MF bright = hn::Ge(peak, hn::Set(df, 1e-4f));
         shine = hn::Zero(df);
         if (!hn::AllFalse(df, bright)) {
-            const Texel s = sample(df, *m.specular_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter,
-                                   1);
+            const Texel s =
+                sample(df, *m.specular_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 1);
             shine = hn::IfThenElseZero(bright, s.c[0]);
         }
     }
@@ -546,6 +581,35 @@ HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&
     (void)di;
     return hn::Or(hn::Or(red, hn::ShiftLeft<8>(green)),
                   hn::Or(hn::ShiftLeft<16>(blue), hn::Set(du, 0xff000000u)));
+}
+
+// The plain way: each vector of a block that holds any of the triangle's
+// pixels shaded as it is (the lanes of other triangles' pixels wasted).
+void shade_by_chunks(const TileWork& work, TileBuffers& buffers, const FastTriangle& t,
+                     std::uint32_t index, TileCounts& counts) {
+    const DF df;
+    const DU du;
+    const std::size_t n = hn::Lanes(df);
+    const int blocks_per_row = buffers.size / kBlock;
+    const BlockRange r = blocks_of(t, work);
+    for (int by = r.first_y; by <= r.last_y; ++by)
+        for (int bx = r.first_x; bx <= r.last_x; ++bx) {
+            const std::size_t base = static_cast<std::size_t>(by * blocks_per_row + bx) * 64;
+            const std::uint32_t* id = buffers.id.get() + base;
+            std::uint32_t* colour = buffers.colour.get() + base;
+            const BlockWeights w = block_weights(t, work.x0 + bx * kBlock, work.y0 + by * kBlock);
+            for (int first = 0; first < 64; first += static_cast<int>(n)) {
+                const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
+                if (hn::AllFalse(du, mine)) continue;
+                VF b[3];
+                weights_at(df, w, first, b);
+                const VU rgba = shade(df, work.materials[t.model], t, b);
+                counts.shaded += hn::CountTrue(du, mine);
+                counts.lanes += n;
+                hn::Store(hn::IfThenElse(mine, rgba, hn::Load(du, colour + first)), du,
+                          colour + first);
+            }
+        }
 }
 
 // Shades each pixel the visibility pass gave a triangle, one full vector at
@@ -571,6 +635,10 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
         const Material& material = work.materials[t.model];
         const BlockRange r = blocks_of(t, work);
         if (r.first_x > r.last_x) continue;
+        if (!work.techniques.full_vectors) {
+            shade_by_chunks(work, buffers, t, index, counts);
+            continue;
+        }
         // The weights, exact at the tile's first pixel, stepped from there.
         const BlockWeights w = block_weights(t, work.x0, work.y0);
         std::size_t queued = 0;
@@ -581,13 +649,15 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                 b[k] = hn::MulAdd(y, hn::Set(df, w.dy[k]),
                                   hn::MulAdd(x, hn::Set(df, w.dx[k]), hn::Set(df, w.origin[k])));
             hn::Store(shade(df, material, t, b), du, shaded);
-            for (std::size_t lane = 0; lane < count; ++lane) colour[queue_slot[lane]] = shaded[lane];
+            for (std::size_t lane = 0; lane < count; ++lane)
+                colour[queue_slot[lane]] = shaded[lane];
             counts.shaded += count;
             counts.lanes += n;
         };
         for (int by = r.first_y; by <= r.last_y; ++by)
             for (int bx = r.first_x; bx <= r.last_x; ++bx) {
-                const std::uint32_t base = static_cast<std::uint32_t>(by * blocks_per_row + bx) * 64;
+                const std::uint32_t base =
+                    static_cast<std::uint32_t>(by * blocks_per_row + bx) * 64;
                 const std::uint32_t* id = buffers.id.get() + base;
                 const VF block_x = hn::Set(df, static_cast<float>(bx * kBlock));
                 const VF block_y = hn::Set(df, static_cast<float>(by * kBlock));
@@ -597,8 +667,8 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                     const auto mine_f = hn::RebindMask(df, mine);
                     hn::CompressStore(hn::Iota(du, base + static_cast<std::uint32_t>(first)), mine,
                                       du, queue_slot + queued);
-                    hn::CompressStore(hn::Add(hn::Load(df, s.column + first), block_x), mine_f,
-                                      df, queue_x + queued);
+                    hn::CompressStore(hn::Add(hn::Load(df, s.column + first), block_x), mine_f, df,
+                                      queue_x + queued);
                     queued += hn::CompressStore(hn::Add(hn::Load(df, s.row + first), block_y),
                                                 mine_f, df, queue_y + queued);
                     if (queued >= n) {
@@ -615,22 +685,23 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
 }
 
 void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, TileCounts& counts) {
-    RasterizeTile(work, buffers, counts);
     static_assert(sizeof(rl::Rgba) == 4);
     std::uint32_t background;
     std::memcpy(&background, &rl::kBackground, 4);
     std::fill(buffers.colour.get(), buffers.colour.get() + buffers.pixels, background);
-    ShadeTile(work, buffers, counts);
-    // Resolve: the tile's blocks back into the frame's rows.
+    RasterizeTile(work, buffers, counts);
+    if (work.techniques.shade_once) ShadeTile(work, buffers, counts);
+    // Resolve: the tile's blocks back into the frame's rows, 8 pixels (one
+    // block's row) at a time.
     const int blocks_per_row = buffers.size / kBlock;
     for (int y = 0; y < work.height; ++y) {
         rl::Rgba* row = &frame.at(work.x0, work.y0 + y);
-        for (int x = 0; x < work.width; ++x) {
-            const std::size_t slot =
-                static_cast<std::size_t>((y / kBlock) * blocks_per_row + x / kBlock) * 64 +
-                static_cast<std::size_t>((y % kBlock) * kBlock + x % kBlock);
-            std::memcpy(static_cast<void*>(row + x), &buffers.colour[slot], 4);
-        }
+        const std::uint32_t* block_row =
+            buffers.colour.get() + static_cast<std::size_t>((y / kBlock) * blocks_per_row) * 64 +
+            static_cast<std::size_t>((y % kBlock) * kBlock);
+        for (int x = 0; x < work.width; x += kBlock)
+            std::memcpy(static_cast<void*>(row + x), block_row + (x / kBlock) * 64,
+                        static_cast<std::size_t>(std::min(kBlock, work.width - x)) * 4);
     }
 }
 
@@ -669,7 +740,8 @@ TileBuffers::TileBuffers(int tile_size)
       pixels(static_cast<std::size_t>(tile_size) * static_cast<std::size_t>(tile_size)),
       depth(hwy::AllocateAligned<float>(pixels)),
       id(hwy::AllocateAligned<std::uint32_t>(pixels)),
-      colour(hwy::AllocateAligned<std::uint32_t>(pixels)) {}
+      colour(hwy::AllocateAligned<std::uint32_t>(pixels)),
+      block_far(pixels / 64) {}
 
 void render_tile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, TileCounts& counts) {
     HWY_DYNAMIC_DISPATCH(RenderTile)(work, buffers, frame, counts);

@@ -28,8 +28,19 @@ struct TileBuffers {
     hwy::AlignedFreeUniquePtr<std::uint32_t[]>
         id;  // index into the frame's triangles, or kNoTriangle
     hwy::AlignedFreeUniquePtr<std::uint32_t[]> colour;  // RGBA bytes, as rl::Rgba
+    std::vector<float> block_far;                       // per block: its farthest depth so far
 };
 inline constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+
+// The techniques of the tile kernels, each on by default; the lab turns
+// them off one at a time to measure what each buys (the image is the same).
+struct Techniques {
+    bool coarse_blocks = true;  // decide whole 8x8 blocks from their corners
+    bool hierarchical_depth =
+        true;                  // skip a block whose farthest depth is nearer than the triangle
+    bool shade_once = true;    // depth and ids first, then shade each visible pixel once
+    bool full_vectors = true;  // queue a triangle's pixels so that the shader's vectors are full
+};
 
 struct TileWork {
     int x0, y0;         // the tile's lower-left pixel in the frame
@@ -38,13 +49,15 @@ struct TileWork {
     const std::uint32_t* bin;  // the tile's triangles, in drawing order
     std::size_t bin_size;
     const Material* materials;  // per model
+    Techniques techniques;
 };
 
 struct TileCounts {
     std::uint64_t blocks_rejected = 0, blocks_full = 0, blocks_partial = 0;
-    std::uint64_t depth_passed = 0;  // samples that passed the depth test (overdraw included)
-    std::uint64_t shaded = 0;        // pixels shaded (each visible pixel once)
-    std::uint64_t lanes = 0;         // SIMD lanes the shader ran on (shaded / lanes: the lanes' use)
+    std::uint64_t blocks_occluded = 0;  // skipped by the hierarchical depth test
+    std::uint64_t depth_passed = 0;     // samples that passed the depth test (overdraw included)
+    std::uint64_t shaded = 0;           // pixels shaded (each visible pixel once)
+    std::uint64_t lanes = 0;  // SIMD lanes the shader ran on (shaded / lanes: the lanes' use)
 };
 
 // Clears the tile, rasterizes its bin (depth test `less`, the first triangle
