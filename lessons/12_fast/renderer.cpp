@@ -86,7 +86,10 @@ struct Renderer::Impl {
     std::vector<char> drawn;                                           // per model, this frame
     std::vector<FastTriangle> triangles;
     int tiles_x, tiles_y;
-    std::vector<std::vector<std::uint32_t>> bins;       // per tile
+    // The bins, as one array sorted by tile (a counting sort): tile i's
+    // triangles are binned[bin_start[i] .. bin_start[i + 1]), in drawing order.
+    std::size_t tiles = 0;
+    std::vector<std::uint32_t> bin_start, bin_fill, binned;
     std::vector<TileCounts> tile_counts;                // per tile
     std::vector<std::unique_ptr<TileBuffers>> buffers;  // per thread of the arena
 
@@ -129,8 +132,10 @@ struct Renderer::Impl {
         triangles.reserve(faces + faces / 4 + 16);
         tiles_x = (width + o.tile_size - 1) / o.tile_size;
         tiles_y = (height + o.tile_size - 1) / o.tile_size;
-        bins.resize(static_cast<std::size_t>(tiles_x) * static_cast<std::size_t>(tiles_y));
-        tile_counts.resize(bins.size());
+        tiles = static_cast<std::size_t>(tiles_x) * static_cast<std::size_t>(tiles_y);
+        bin_start.resize(tiles + 1);
+        bin_fill.resize(tiles);
+        tile_counts.resize(tiles);
         for (int i = 0; i < arena.max_concurrency(); ++i)
             buffers.push_back(std::make_unique<TileBuffers>(o.tile_size));
     }
@@ -309,15 +314,24 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
 
     // 3. Binning: each triangle into the tiles its box touches, in order.
     start = Clock::now();
-    for (std::vector<std::uint32_t>& bin : s.bins) bin.clear();
     const int tile = s.options.tile_size;
-    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
-        const FastTriangle& f = s.triangles[t];
+    const auto each_tile_of = [&](const FastTriangle& f, auto&& visit) {
         for (int ty = f.y0 / tile; ty <= f.y1 / tile; ++ty)
             for (int tx = f.x0 / tile; tx <= f.x1 / tile; ++tx)
-                s.bins[static_cast<std::size_t>(ty * s.tiles_x + tx)].push_back(
-                    static_cast<std::uint32_t>(t));
-    }
+                visit(static_cast<std::size_t>(ty * s.tiles_x + tx));
+    };
+    std::fill(s.bin_start.begin(), s.bin_start.end(), 0);
+    for (const FastTriangle& f : s.triangles)
+        each_tile_of(f, [&](std::size_t i) { ++s.bin_start[i + 1]; });
+    for (std::size_t i = 0; i < s.tiles; ++i) s.bin_start[i + 1] += s.bin_start[i];
+    // Grown by half again when a frame needs more, so that an orbit's
+    // frames after the first rarely need to grow it at all.
+    if (s.bin_start[s.tiles] > s.binned.size()) s.binned.resize(s.bin_start[s.tiles] * 3 / 2);
+    std::copy(s.bin_start.begin(), s.bin_start.end() - 1, s.bin_fill.begin());
+    for (std::size_t t = 0; t < s.triangles.size(); ++t)
+        each_tile_of(s.triangles[t], [&](std::size_t i) {
+            s.binned[s.bin_fill[i]++] = static_cast<std::uint32_t>(t);
+        });
     times_.binning = milliseconds_since(start);
 
     // 4. The tiles, in parallel: each one rasterized, shaded and resolved by one thread.
@@ -329,18 +343,18 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                             std::min(tile, s.width - tx * tile),
                             std::min(tile, s.height - ty * tile),
                             &s.triangles,
-                            s.bins[i].data(),
-                            s.bins[i].size(),
+                            s.binned.data() + s.bin_start[i],
+                            s.bin_start[i + 1] - s.bin_start[i],
                             s.materials.data(),
                             s.options.techniques};
         s.tile_counts[i] = {};
         render_tile(work, buffers, frame_, s.tile_counts[i]);
     };
     if (!s.options.parallel) {
-        for (std::size_t i = 0; i < s.bins.size(); ++i) draw_tile(i, *s.buffers[0]);
+        for (std::size_t i = 0; i < s.tiles; ++i) draw_tile(i, *s.buffers[0]);
     } else {
         s.arena.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.bins.size(), 1),
+            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.tiles, 1),
                               [&](const tbb::blocked_range<std::size_t>& range) {
                                   // Each thread of the arena has buffers of its own.
                                   TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(

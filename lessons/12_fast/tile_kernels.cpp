@@ -752,9 +752,8 @@ void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& coun
 void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count) {
     HWY_DYNAMIC_DISPATCH(EncodeSrgb)(values, bytes, count);
 }
-const char* simd_target() {
-    return HWY_DYNAMIC_DISPATCH(SimdTarget)();
-}
+const char* simd_target() { return HWY_DYNAMIC_DISPATCH(SimdTarget)(); }
+std::vector<std::int64_t> simd_targets() { return hwy::SupportedAndGeneratedTargets(); }
 
 }  // namespace fast
 #endif

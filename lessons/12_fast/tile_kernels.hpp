@@ -75,4 +75,9 @@ void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count);
 // The name of the instruction set the kernels run with on this CPU.
 const char* simd_target();
 
+// The instruction sets the kernels were compiled for that this CPU runs,
+// best first, as Highway's target bits (hwy::SetSupportedTargetsForTest
+// with one of them makes the kernels run with it; 0 goes back to the best).
+std::vector<std::int64_t> simd_targets();
+
 }  // namespace fast

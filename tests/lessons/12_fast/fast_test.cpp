@@ -1,0 +1,316 @@
+// Lesson 12's tests: the fast path covers exactly the pixels lesson 02's edge
+// rasterizer covers, draws lesson 07's image for every shading option, gives
+// the same bytes on any number of threads and with any technique turned off,
+// allocates nothing after its first frame, and encodes sRGB as lesson 06 does
+// on every instruction set it was built for. docs/12_fast.md links each.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <new>
+#include <set>
+
+#include "02_triangles/lab/triangle_measure.hpp"
+#include "06_shading/colour.hpp"
+#include "07_normal_mapping/scene.hpp"
+#include "12_fast/lab/coverage_check.hpp"
+#include "12_fast/orbit.hpp"
+#include "12_fast/renderer.hpp"
+#include "hwy/targets.h"
+#include "rasterlab/image_metrics.hpp"
+#include "rasterlab/transform.hpp"
+
+// Every allocation of this test program, counted (the frame loop must make
+// none). The replacements pair malloc with free; GCC, seeing operator new's
+// memory reach free() through them, would warn of a mismatch that is not one.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
+namespace {
+std::atomic<long> allocations{0};
+}
+void* operator new(std::size_t size) {
+    ++allocations;
+    if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept {
+    std::free(p);
+}
+void operator delete(void* p, std::size_t) noexcept {
+    std::free(p);
+}
+#pragma GCC diagnostic pop
+
+namespace {
+
+using triangles::ScreenTriangle;
+using Pixels = std::set<std::pair<int, int>>;
+
+Pixels lesson02(const ScreenTriangle& t, int width, int height) {
+    const auto list = triangles::covered_pixels(triangles::RasterMethod::edge, t, width, height);
+    return {list.begin(), list.end()};
+}
+
+// The fast path's pixels, with every tiling and with the coarse block test on and off.
+void expect_same_coverage(const ScreenTriangle& t, int width, int height) {
+    for (int tile : {8, 16, 64})
+        for (bool coarse : {true, false}) {
+            fast::Techniques techniques;
+            techniques.coarse_blocks = coarse;
+            const auto fast = fast::covered_pixels(t, width, height, tile, techniques);
+            ASSERT_TRUE(fast.has_value());
+            EXPECT_EQ(Pixels(fast->begin(), fast->end()), lesson02(t, width, height))
+                << "tile " << tile << (coarse ? ", coarse" : "") << ": (" << t.v[0].x << ", "
+                << t.v[0].y << ") (" << t.v[1].x << ", " << t.v[1].y << ") (" << t.v[2].x << ", "
+                << t.v[2].y << ")";
+        }
+}
+
+TEST(Coverage, MatchesLessonTwoOnItsStabilityScenesBitForBit) {
+    std::vector<ScreenTriangle> scene = triangles::random_triangles(200, 60, 64, 11);
+    for (const auto& more :
+         {triangles::tie_triangles(200, 64, 12), triangles::disc_fan({32.5f, 32.5f}, 28, 24),
+          triangles::jittered_grid(6, 64, 4, 3)})
+        scene.insert(scene.end(), more.begin(), more.end());
+    // Needles, slivers, centres exactly on edges, a triangle 3 million pixels out.
+    scene.push_back({{{0.5f, 0.5f}, {63.5f, 1.0f}, {63.5f, 0.75f}}});
+    scene.push_back({{{3.0f, 60.0f}, {60.0f, 3.0f}, {60.1f, 3.2f}}});
+    scene.push_back({{{4.5f, 4.5f}, {30.5f, 4.5f}, {4.5f, 30.5f}}});
+    scene.push_back({{{-3e6f, -1e6f}, {3e6f, -2e6f}, {10.25f, 3e6f}}});
+    for (const ScreenTriangle& t : scene) {
+        expect_same_coverage(t, 64, 64);
+        expect_same_coverage({{t.v[0], t.v[2], t.v[1]}}, 64, 64);  // the other winding
+    }
+}
+
+TEST(Coverage, MatchesLessonTwoAcrossTileSeamsOfALargerFrame) {
+    // 200 x 150: tiles of 64 meet inside the triangles, and the last ones are cut short.
+    for (ScreenTriangle t : triangles::random_triangles(150, 3000, 200, 21)) {
+        for (rl::vec2& v : t.v) v.y *= 0.75f;
+        expect_same_coverage(t, 200, 150);
+    }
+}
+
+TEST(Coverage, RefusesWhatLessonTwoRefuses) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    for (const ScreenTriangle& t :
+         {ScreenTriangle{{{nan, 0}, {10, 0}, {0, 10}}}, ScreenTriangle{{{0, 0}, {inf, 0}, {0, 10}}},
+          ScreenTriangle{{{-5e6f, 0}, {5e6f, 0}, {0, 5e6f}}}}) {
+        EXPECT_FALSE(triangles::rasterize(triangles::RasterMethod::edge, t, 64, 64,
+                                          [](int, int, rl::vec3) {}));
+        EXPECT_FALSE(fast::covered_pixels(t, 64, 64, 16, {}).has_value());
+    }
+    // Zero area: nothing, as lesson 02.
+    const auto flat = fast::covered_pixels({{{0, 0}, {10, 10}, {20, 20}}}, 64, 64, 16, {});
+    ASSERT_TRUE(flat.has_value());
+    EXPECT_TRUE(flat->empty());
+}
+
+// ----------------------------------------------------------------- images
+
+struct Scene {
+    std::vector<normal_mapping::MappedModel> models;
+    perspective::Camera camera;
+};
+
+Scene default_scene(const normal_mapping::RenderOptions& options) {
+    std::vector<std::string> warnings;
+    Scene s{normal_mapping::default_scene(normal_mapping::TangentMethod::split, warnings,
+                                          options.output),
+            {}};
+    s.camera.eye = {0.6f, 2.2f, 4.2f};
+    s.camera.target = {0, 0.5f, 0};
+    s.camera.near = 0.5f;
+    s.camera.far = 20;
+    return s;
+}
+
+rl::Image lesson07(const Scene& s, const normal_mapping::RenderOptions& options, int width,
+                   int height) {
+    perspective::ColourTarget frame = perspective::colour_target(width, height);
+    normal_mapping::render(s.models, s.camera, options, frame);
+    return frame.colour();
+}
+
+rl::Image fast_image(const Scene& s, const fast::FastOptions& options, int width, int height,
+                     const perspective::Camera* camera = nullptr) {
+    fast::Renderer renderer(s.models, width, height, options);
+    renderer.render(camera ? *camera : s.camera);
+    return renderer.frame();
+}
+
+// Lesson 07's golden tolerance: no channel 8 levels off, at most 0.1% of
+// pixels more than 1 level off.
+void expect_lesson07_tolerance(const rl::Image& expected, const rl::Image& actual,
+                               const std::string& what) {
+    const rl::ImageDiff d = rl::compare_images(expected, actual, 1);
+    EXPECT_LE(d.max_abs, 8) << what;
+    EXPECT_LE(d.share_over, 0.001) << what;
+}
+
+struct Variant {
+    const char* name;
+    void (*apply)(normal_mapping::RenderOptions&);
+};
+
+TEST(Image, MatchesLessonSevenForEveryShadingOption) {
+    const Variant variants[] = {
+        {"default", [](normal_mapping::RenderOptions&) {}},
+        {"object map", [](auto& o) { o.normal_map = normal_mapping::NormalMap::object; }},
+        {"no map", [](auto& o) { o.normal_map = normal_mapping::NormalMap::none; }},
+        {"phong", [](auto& o) { o.specular = shading::Specular::phong; }},
+        {"bilinear", [](auto& o) { o.filter = textures::Filter::bilinear; }},
+        {"nearest", [](auto& o) { o.filter = textures::Filter::nearest; }},
+        {"naive", [](auto& o) { o.output = shading::Output::naive; }},
+        {"one light", [](auto& o) { o.lighting.lights.resize(1); }},
+        {"shininess 7.5", [](auto& o) { o.lighting.shininess = 7.5f; }},
+        {"affine", [](auto& o) { o.pipeline.interpolation = perspective::Interpolation::affine; }},
+        {"all planes", [](auto& o) { o.pipeline.clip = perspective::ClipMode::all; }},
+        {"no culling", [](auto& o) { o.pipeline.cull = perspective::Cull::none; }},
+    };
+    for (const Variant& v : variants) {
+        fast::FastOptions options;
+        v.apply(options.render);
+        const Scene s = default_scene(options.render);
+        expect_lesson07_tolerance(lesson07(s, options.render, 160, 120),
+                                  fast_image(s, options, 160, 120), v.name);
+    }
+}
+
+TEST(Image, MatchesLessonSevenWithTheEyeInsideTheSceneAndAMirroredModel) {
+    fast::FastOptions options;
+    Scene s = default_scene(options.render);
+    std::vector<std::string> warnings;
+    // The globe mirrored in x: its faces come clockwise, its bitangents flip.
+    s.models.push_back(normal_mapping::load_mapped_model(
+        rl::project_model("globe"),
+        rl::compose({.translation = {0.2f, 0.6f, 1.2f}, .scale = {-0.5f, 0.5f, 0.5f}}),
+        normal_mapping::TangentMethod::split, warnings));
+    expect_lesson07_tolerance(lesson07(s, options.render, 160, 120),
+                              fast_image(s, options, 160, 120), "mirrored globe");
+    // The eye between the models, most of the floor and the crate behind it
+    // or beside it: faces cut by the near plane (lesson 05's clipping).
+    s.camera.eye = {0.1f, 0.7f, 0.3f};
+    s.camera.target = {-0.75f, 0.8f, -0.2f};
+    s.camera.near = 0.05f;
+    expect_lesson07_tolerance(lesson07(s, options.render, 160, 120),
+                              fast_image(s, options, 160, 120), "eye inside");
+}
+
+TEST(Image, SameBytesWhateverTheThreadCount) {
+    fast::FastOptions options;
+    const Scene s = default_scene(options.render);
+    options.threads = 1;
+    const rl::Image one = fast_image(s, options, 301, 203);  // tiles cut short at the edges
+    for (int threads : {2, 7}) {
+        options.threads = threads;
+        EXPECT_EQ(fast_image(s, options, 301, 203), one) << threads << " threads";
+    }
+}
+
+TEST(Image, EachTechniqueOffLeavesTheImageAlone) {
+    const fast::FastOptions all;
+    const Scene s = default_scene(all.render);
+    const rl::Image reference = fast_image(s, all, 160, 120);
+    const auto with = [&](auto&& change) {
+        fast::FastOptions o = all;
+        change(o);
+        return fast_image(s, o, 160, 120);
+    };
+    // The same integers and floats in another order of work: the same bytes.
+    EXPECT_EQ(with([](auto& o) { o.vertex_cache = false; }), reference);
+    EXPECT_EQ(with([](auto& o) { o.parallel = false; }), reference);
+    EXPECT_EQ(with([](auto& o) { o.techniques.coarse_blocks = false; }), reference);
+    EXPECT_EQ(with([](auto& o) { o.techniques.hierarchical_depth = false; }), reference);
+    // Shading by blocks steps the weights from each block's corner, not from
+    // the tile's: a level apart in a few pixels at most; shading every passing
+    // pixel at once (no visibility buffer) ends on the same colours as that.
+    const rl::Image by_blocks = with([](auto& o) { o.techniques.full_vectors = false; });
+    expect_lesson07_tolerance(reference, by_blocks, "by blocks");
+    EXPECT_EQ(with([](auto& o) { o.techniques.shade_once = false; }), by_blocks);
+}
+
+TEST(Image, EveryInstructionSetGivesLessonSevensImage) {
+    fast::FastOptions options;
+    const Scene s = default_scene(options.render);
+    const rl::Image expected = lesson07(s, options.render, 160, 120);
+    int tested = 0;
+    for (std::int64_t target : fast::simd_targets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        expect_lesson07_tolerance(expected, fast_image(s, options, 160, 120),
+                                  std::string(fast::simd_target()));
+        EXPECT_STREQ(fast::simd_target(), hwy::TargetName(target));
+        ++tested;
+    }
+    hwy::SetSupportedTargetsForTest(0);  // back to the best this CPU has
+    EXPECT_GE(tested, 2);                // the portable fallback and at least one SIMD set
+}
+
+TEST(Frames, NoAllocationAfterTheFirstFrame) {
+    fast::FastOptions options;
+    const Scene s = default_scene(options.render);
+    fast::Renderer renderer(s.models, 200, 150, options);
+    renderer.render(fast::orbit(s.camera, 0, 8));
+    const long before = allocations.load();
+    for (int frame = 1; frame < 8; ++frame) renderer.render(fast::orbit(s.camera, frame, 8));
+    EXPECT_EQ(allocations.load() - before, 0);
+}
+
+TEST(Frames, TheOrbitEndsOnTheCameraGiven) {
+    perspective::Camera c;
+    c.eye = {1, 2, 3};
+    const perspective::Camera last = fast::orbit(c, 9, 10);
+    EXPECT_EQ(last.eye, c.eye);
+    const perspective::Camera half = fast::orbit(c, 4, 10);  // 180 degrees about +y
+    EXPECT_NEAR(half.eye.x, -1, 1e-5);
+    EXPECT_NEAR(half.eye.y, 2, 1e-5);
+    EXPECT_NEAR(half.eye.z, -3, 1e-5);
+    EXPECT_EQ(fast::median_after_first({100, 3, 1, 2}), 2);
+}
+
+TEST(Encoding, SimdSrgbMatchesLessonSixByteForByte) {
+    std::vector<float> values = {0.0f,
+                                 -0.0f,
+                                 -1.0f,
+                                 1.0f,
+                                 2.0f,
+                                 1e-30f,
+                                 std::numeric_limits<float>::quiet_NaN(),
+                                 std::numeric_limits<float>::infinity()};
+    const shading::SrgbByteTables& tables = shading::srgb_byte_tables();
+    for (std::size_t k = 0; k < 255; ++k) {  // each step and its neighbours
+        const float step = tables.steps[k];
+        values.push_back(step);
+        values.push_back(std::nextafter(step, 0.0f));
+        values.push_back(std::nextafter(step, 2.0f));
+    }
+    for (int i = 0; i <= 200000; ++i) values.push_back(static_cast<float>(i) / 200000.0f);
+    std::vector<std::uint8_t> bytes(values.size());
+    for (std::int64_t target : fast::simd_targets()) {
+        hwy::SetSupportedTargetsForTest(target);
+        fast::encode_srgb(values.data(), bytes.data(), values.size());
+        for (std::size_t i = 0; i < values.size(); ++i)
+            ASSERT_EQ(bytes[i], shading::encode({values[i], 0, 0}, shading::Output::srgb).r)
+                << values[i] << " on " << hwy::TargetName(target);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+TEST(Options, RefusedWithTheReason) {
+    const fast::FastOptions defaults;
+    const Scene s = default_scene(defaults.render);
+    fast::FastOptions o = defaults;
+    o.tile_size = 12;
+    EXPECT_THROW(fast::Renderer(s.models, 64, 64, o), std::invalid_argument);
+    o = defaults;
+    o.render.pipeline.raster = triangles::RasterMethod::scanline;
+    EXPECT_THROW(fast::Renderer(s.models, 64, 64, o), std::invalid_argument);
+    o = defaults;
+    o.render.lighting.lights.resize(9, o.render.lighting.lights[0]);
+    EXPECT_THROW(fast::Renderer(s.models, 64, 64, o), std::invalid_argument);
+}
+
+}  // namespace
