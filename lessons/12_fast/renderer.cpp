@@ -365,15 +365,7 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         });
     }
     times_.tiles = milliseconds_since(start);
-    for (const TileCounts& c : s.tile_counts) {
-        counts.tiles.blocks_rejected += c.blocks_rejected;
-        counts.tiles.blocks_full += c.blocks_full;
-        counts.tiles.blocks_partial += c.blocks_partial;
-        counts.tiles.blocks_occluded += c.blocks_occluded;
-        counts.tiles.depth_passed += c.depth_passed;
-        counts.tiles.shaded += c.shaded;
-        counts.tiles.lanes += c.lanes;
-    }
+    for (const TileCounts& c : s.tile_counts) counts.tiles += c;
     return counts;
 }
 

@@ -38,7 +38,9 @@ struct FastOptions {
     Techniques techniques;     // the tile kernels' (tile_kernels.hpp)
 };
 
-// Where a frame's time went, in milliseconds, from timers around each stage.
+// Where a frame's time went, in milliseconds of the clock, from timers
+// around each stage (the tiles' own split, summed over threads, is in
+// FrameCounts::tiles).
 struct StageTimes {
     double vertex = 0, setup = 0, binning = 0, tiles = 0;
 };

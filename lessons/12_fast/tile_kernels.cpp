@@ -5,6 +5,7 @@
 // that each line works on a vector of pixels. Derivations: docs/12_fast.md.
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -686,11 +687,19 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
 
 void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, TileCounts& counts) {
     static_assert(sizeof(rl::Rgba) == 4);
+    using Clock = std::chrono::steady_clock;
+    const auto ns = [](Clock::duration d) {
+        return static_cast<std::uint64_t>(
+            std::chrono::duration_cast<std::chrono::nanoseconds>(d).count());
+    };
+    const Clock::time_point start = Clock::now();
     std::uint32_t background;
     std::memcpy(&background, &rl::kBackground, 4);
     std::fill(buffers.colour.get(), buffers.colour.get() + buffers.pixels, background);
     RasterizeTile(work, buffers, counts);
+    const Clock::time_point rasterized = Clock::now();
     if (work.techniques.shade_once) ShadeTile(work, buffers, counts);
+    const Clock::time_point shaded = Clock::now();
     // Resolve: the tile's blocks back into the frame's rows, 8 pixels (one
     // block's row) at a time.
     const int blocks_per_row = buffers.size / kBlock;
@@ -703,6 +712,9 @@ void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, Ti
             std::memcpy(static_cast<void*>(row + x), block_row + (x / kBlock) * 64,
                         static_cast<std::size_t>(std::min(kBlock, work.width - x)) * 4);
     }
+    counts.raster_ns += ns(rasterized - start);
+    counts.shade_ns += ns(shaded - rasterized);
+    counts.resolve_ns += ns(Clock::now() - shaded);
 }
 
 void EncodeSrgb(const float* values, std::uint8_t* bytes, std::size_t count) {
@@ -735,6 +747,15 @@ HWY_EXPORT(RasterizeTile);
 HWY_EXPORT(EncodeSrgb);
 HWY_EXPORT(SimdTarget);
 
+TileCounts& TileCounts::operator+=(const TileCounts& o) {
+    blocks_rejected += o.blocks_rejected, blocks_full += o.blocks_full;
+    blocks_partial += o.blocks_partial, blocks_occluded += o.blocks_occluded;
+    depth_passed += o.depth_passed, shaded += o.shaded;
+    raster_ns += o.raster_ns, shade_ns += o.shade_ns, resolve_ns += o.resolve_ns;
+    lanes += o.lanes;
+    return *this;
+}
+
 TileBuffers::TileBuffers(int tile_size)
     : size(tile_size),
       pixels(static_cast<std::size_t>(tile_size) * static_cast<std::size_t>(tile_size)),
@@ -752,8 +773,12 @@ void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& coun
 void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count) {
     HWY_DYNAMIC_DISPATCH(EncodeSrgb)(values, bytes, count);
 }
-const char* simd_target() { return HWY_DYNAMIC_DISPATCH(SimdTarget)(); }
-std::vector<std::int64_t> simd_targets() { return hwy::SupportedAndGeneratedTargets(); }
+const char* simd_target() {
+    return HWY_DYNAMIC_DISPATCH(SimdTarget)();
+}
+std::vector<std::int64_t> simd_targets() {
+    return hwy::SupportedAndGeneratedTargets();
+}
 
 }  // namespace fast
 #endif

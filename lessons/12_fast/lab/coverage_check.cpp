@@ -2,9 +2,9 @@
 
 namespace fast {
 
-std::optional<std::vector<std::pair<int, int>>> covered_pixels(
-    const triangles::ScreenTriangle& t, int width, int height, int tile_size,
-    const Techniques& techniques) {
+std::optional<std::vector<std::pair<int, int>>> covered_pixels(const triangles::ScreenTriangle& t,
+                                                               int width, int height, int tile_size,
+                                                               const Techniques& techniques) {
     Setup setup{};
     for (int k = 0; k < 3; ++k) setup.window[k] = {t.v[k].x, t.v[k].y, 0.5f};
     std::vector<FastTriangle> triangles(1);
@@ -17,8 +17,14 @@ std::optional<std::vector<std::pair<int, int>>> covered_pixels(
                                            std::vector<bool>(static_cast<std::size_t>(width)));
     for (int y0 = 0; y0 < height; y0 += tile_size)
         for (int x0 = 0; x0 < width; x0 += tile_size) {
-            const TileWork work{x0, y0, std::min(tile_size, width - x0),
-                                std::min(tile_size, height - y0), &triangles, bin, 1, nullptr,
+            const TileWork work{x0,
+                                y0,
+                                std::min(tile_size, width - x0),
+                                std::min(tile_size, height - y0),
+                                &triangles,
+                                bin,
+                                1,
+                                nullptr,
                                 techniques};
             TileCounts counts;
             rasterize_tile(work, buffers, counts);
@@ -29,8 +35,8 @@ std::optional<std::vector<std::pair<int, int>>> covered_pixels(
                         static_cast<std::size_t>((y / kBlock) * blocks_per_row + x / kBlock) * 64 +
                         static_cast<std::size_t>((y % kBlock) * kBlock + x % kBlock);
                     if (buffers.id[slot] == 0)
-                        covered[static_cast<std::size_t>(y0 + y)][static_cast<std::size_t>(x0 + x)] =
-                            true;
+                        covered[static_cast<std::size_t>(y0 + y)]
+                               [static_cast<std::size_t>(x0 + x)] = true;
                 }
         }
     for (int y = 0; y < height; ++y)

@@ -1,0 +1,432 @@
+// Lesson 12's lab: how fast the fast path is, what each technique buys, and
+// how it stands against lesson 07's path and Mesa's llvmpipe on the same
+// cores. Every frame is timed over an orbit of the camera (Google Benchmark:
+// 5 repetitions interleaved in random order, warm-up excluded); every image
+// is also compared, with lesson 07's and with llvmpipe's.
+//   1. 12_steps.csv: lesson 07's path, then the fast path with one technique
+//      after another turned on, at 1024x1024, on two scenes;
+//   2. 12_sizes.csv: 512^2 to 4096^2, three scenes (lesson 07's, the globe
+//      filling the frame, a sphere of about a million triangles with the
+//      globe's maps): ours on 1 and 2 threads, llvmpipe, lesson 07 (its
+//      scene), and the floor: clearing colour and depth and writing every
+//      pixel once;
+//   3. 12_triangles.csv: the sphere from 2 thousand to 2 million triangles
+//      at 1024x1024, ours and llvmpipe;
+//   4. 12_stages.csv: where the fast path's time goes.
+#include <benchmark/benchmark.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "05_perspective/view_options.hpp"
+#include "06_shading/lab/sphere_truth.hpp"
+#include "12_fast/orbit.hpp"
+#include "12_fast/renderer.hpp"
+#include "hwy/targets.h"
+#include "rasterlab/image_metrics.hpp"
+#include "rasterlab/lab.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "rasterlab/results_table.hpp"
+#include "rasterlab/transform.hpp"
+#ifdef RASTERLAB_LLVMPIPE
+#include "llvmpipe_peer.hpp"
+#endif
+
+namespace {
+
+using normal_mapping::MappedModel;
+
+constexpr int kOrbitFrames = 30;  // the camera goes round once in this many frames
+constexpr int kThreads = 2;       // this machine's cores: ours and llvmpipe's
+
+struct Scene {
+    std::string name;
+    std::vector<MappedModel> models;
+    perspective::Camera camera;
+};
+
+perspective::Camera framed(const std::vector<MappedModel>& models) {
+    perspective::Box box;
+    for (const MappedModel& m : models)
+        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
+    return perspective::resolve_camera({}, box, 1.0f);  // what the programs frame
+}
+
+// A sphere the globe's size with the globe's maps and `segments` around
+// (segments^2 triangles), for the triangle-count sweep.
+MappedModel sphere_with_globe_maps(const MappedModel& globe, int segments) {
+    MappedModel m{globe.lit, {}, globe.maps};
+    m.lit.model.mesh = shading::uv_sphere(segments);
+    m.lit.model.mesh.source = globe.lit.model.mesh.source;
+    m.lit.model.box = perspective::bounds(m.lit.model.mesh, rl::mat4::identity());
+    m.lit.normals = shading::corner_normals(m.lit.model.mesh, shading::Weighting::angle);
+    m.tangents = normal_mapping::corner_tangents(m.lit.model.mesh, m.lit.normals,
+                                                 normal_mapping::TangentMethod::split);
+    return m;
+}
+
+// The unit globe seen so that it touches the top and bottom of the frame.
+perspective::Camera filling_the_frame() {
+    perspective::Camera c;
+    c.fov_y = 50;
+    const float distance = 1.0f / std::sin(rl::radians(c.fov_y / 2));
+    c.eye = rl::vec3{0.3f, 0.35f, 1.0f} * (distance / rl::length(rl::vec3{0.3f, 0.35f, 1.0f}));
+    c.target = {0, 0, 0};
+    c.near = distance - 1.2f;
+    c.far = distance + 1.2f;
+    return c;
+}
+
+// ------------------------------------------------------------- the timings
+
+struct Cell {
+    const Scene* scene;
+    int size;
+    std::string renderer;       // "fast", "lesson 07", "llvmpipe", "floor"
+    fast::FastOptions options;  // for "fast"
+    std::int64_t simd = 0;      // a Highway target to run with (0: the best)
+    std::string name;           // the benchmark's
+};
+
+void time_fast(benchmark::State& state, const Cell* c) {
+    hwy::SetSupportedTargetsForTest(c->simd);
+    fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
+    int frame = 0;
+    for (auto _ : state) {
+        renderer.render(fast::orbit(c->scene->camera, frame++ % kOrbitFrames, kOrbitFrames));
+        benchmark::DoNotOptimize(renderer.frame().get(0, 0));
+    }
+    hwy::SetSupportedTargetsForTest(0);
+}
+
+void time_lesson07(benchmark::State& state, const Cell* c) {
+    perspective::ColourTarget target = perspective::colour_target(c->size, c->size);
+    int frame = 0;
+    for (auto _ : state) {
+        target.clear(rl::kBackground);
+        normal_mapping::render(c->scene->models,
+                               fast::orbit(c->scene->camera, frame++ % kOrbitFrames, kOrbitFrames),
+                               c->options.render, target);
+        benchmark::DoNotOptimize(target.colour().get(0, 0));
+    }
+}
+
+// The floor: what any renderer must do per frame at this size, on the same
+// threads: clear a colour and a depth buffer and write every pixel once.
+void time_floor(benchmark::State& state, const Cell* c) {
+    rl::Image colour(c->size, c->size);
+    std::vector<float> depth(colour.pixels().size());
+    tbb::task_arena arena(kThreads);
+    const std::size_t width = static_cast<std::size_t>(c->size);
+    for (auto _ : state) {
+        arena.execute([&] {
+            tbb::parallel_for(0, c->size, [&](int y) {
+                const std::size_t row = static_cast<std::size_t>(y) * width;
+                std::fill_n(depth.data() + row, width, 1.0f);
+                std::fill_n(colour.pixels().data() + row, width, rl::kBackground);
+                for (std::size_t x = 0; x < width; ++x) colour.pixels()[row + x].r = 1;
+            });
+        });
+        benchmark::DoNotOptimize(colour.pixels().data());
+        benchmark::DoNotOptimize(depth.data());
+    }
+}
+
+#ifdef RASTERLAB_LLVMPIPE
+void time_llvmpipe(benchmark::State& state, const Cell* c) {
+    fast::LlvmpipePeer peer(c->size, c->size, kThreads);
+    peer.upload(c->scene->models, c->options.render);
+    peer.render(c->scene->camera);  // the first frame compiles the shaders
+    int frame = 0;
+    for (auto _ : state)
+        peer.render(fast::orbit(c->scene->camera, frame++ % kOrbitFrames, kOrbitFrames));
+}
+#endif
+
+bool peer_available() {
+#ifdef RASTERLAB_LLVMPIPE
+    try {
+        fast::LlvmpipePeer probe(8, 8, kThreads);
+        return true;
+    } catch (const fast::PeerUnavailable& e) {
+        std::printf("llvmpipe peer skipped: %s\n", e.what());
+        return false;
+    }
+#else
+    std::printf("llvmpipe peer skipped: built without OSMesa (libosmesa6-dev)\n");
+    return false;
+#endif
+}
+
+void register_cell(Cell& c) {
+    benchmark::internal::Benchmark* b = nullptr;
+    if (c.renderer == "lesson 07")
+        b = benchmark::RegisterBenchmark(c.name.c_str(), time_lesson07, &c);
+    else if (c.renderer == "floor")
+        b = benchmark::RegisterBenchmark(c.name.c_str(), time_floor, &c);
+#ifdef RASTERLAB_LLVMPIPE
+    else if (c.renderer == "llvmpipe")
+        b = benchmark::RegisterBenchmark(c.name.c_str(), time_llvmpipe, &c);
+#endif
+    else
+        b = benchmark::RegisterBenchmark(c.name.c_str(), time_fast, &c);
+    b->Unit(benchmark::kMillisecond);
+}
+
+// ------------------------------------------------------------- the images
+
+rl::Image fast_frame(const Scene& s, int size, const fast::FastOptions& o, std::int64_t simd) {
+    hwy::SetSupportedTargetsForTest(simd);
+    fast::Renderer renderer(s.models, size, size, o);
+    renderer.render(s.camera);
+    hwy::SetSupportedTargetsForTest(0);
+    return renderer.frame();
+}
+
+rl::Image lesson07_frame(const Scene& s, int size, const normal_mapping::RenderOptions& o) {
+    perspective::ColourTarget target = perspective::colour_target(size, size);
+    normal_mapping::render(s.models, s.camera, o, target);
+    return target.colour();
+}
+
+std::optional<rl::Image> llvmpipe_frame(const Scene& s, int size,
+                                        const normal_mapping::RenderOptions& o) {
+#ifdef RASTERLAB_LLVMPIPE
+    fast::LlvmpipePeer peer(size, size, kThreads);
+    peer.upload(s.models, o);
+    peer.render(s.camera);
+    return peer.frame();
+#else
+    (void)s, (void)size, (void)o;
+    return std::nullopt;
+#endif
+}
+
+// The steps: every technique off, then on one after another.
+struct Step {
+    std::string label;
+    fast::FastOptions options;
+    std::int64_t simd;
+};
+std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& simd_sets) {
+    fast::FastOptions o;
+    o.vertex_cache = false;
+    o.parallel = false;
+    o.threads = 1;
+    o.techniques = {false, false, false, false};
+    std::vector<Step> out;
+    out.push_back({"one thread, scalar, per corner", o, scalar});
+    o.vertex_cache = true;
+    out.push_back({"+ vertex cache", o, scalar});
+    o.techniques.coarse_blocks = true;
+    out.push_back({"+ 8x8 blocks accepted and rejected whole", o, scalar});
+    o.techniques.hierarchical_depth = true;
+    out.push_back({"+ a depth bound per block", o, scalar});
+    o.techniques.shade_once = true;
+    out.push_back({"+ visibility buffer: each pixel shaded once", o, scalar});
+    // Each instruction set this CPU has, narrowest first, then full vectors.
+    for (auto it = simd_sets.rbegin(); it != simd_sets.rend(); ++it) {
+        if (*it == scalar) continue;
+        out.push_back({std::string("+ SIMD: ") + hwy::TargetName(*it), o, *it});
+    }
+    o.techniques.full_vectors = true;
+    out.push_back({"+ full vectors (a triangle's pixels queued)", o, simd_sets.front()});
+    o.parallel = true;
+    o.threads = kThreads;
+    out.push_back({"+ 2 threads: the fast path", o, simd_sets.front()});
+    return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const rl::lab::Options options = rl::lab::init(
+        argc, argv,
+        "Lesson 12's lab: the fast path, technique by technique, against lesson 07 and Mesa's "
+        "llvmpipe. Writes 12_steps.csv, 12_sizes.csv, 12_triangles.csv and 12_stages.csv.");
+    return rl::guarded_main("12_fast_lab", [&] {
+        const bool peer = peer_available();
+        std::vector<std::string> warnings;
+        std::vector<Scene> scenes;
+        scenes.push_back(
+            {"lesson 07's scene",
+             normal_mapping::default_scene(normal_mapping::TangentMethod::split, warnings),
+             {}});
+        scenes.back().camera = framed(scenes.back().models);
+        const MappedModel globe =
+            normal_mapping::load_mapped_model(rl::project_model("globe"), rl::mat4::identity(),
+                                              normal_mapping::TangentMethod::split, warnings);
+        scenes.push_back({"the globe filling the frame", {globe}, filling_the_frame()});
+        const int million = options.quick ? 64 : 1000;  // segments: 2 x 1000 x 500 triangles
+        scenes.push_back({"a sphere of " + std::to_string(million * million) + " triangles",
+                          {sphere_with_globe_maps(globe, million)},
+                          filling_the_frame()});
+        for (const Scene& s : scenes) normal_mapping::build_mip_levels(s.models);
+
+        const std::vector<std::int64_t> simd_sets = fast::simd_targets();
+        const std::int64_t scalar = simd_sets.back();  // the portable fallback
+        const std::vector<int> sizes =
+            options.quick ? std::vector<int>{64, 96} : std::vector<int>{512, 800, 1024, 2048, 4096};
+        const int step_size = options.quick ? 96 : 1024;
+
+        std::vector<std::unique_ptr<Cell>> cells;
+        const auto add = [&](const Scene& s, int size, const std::string& renderer,
+                             const fast::FastOptions& o, std::int64_t simd,
+                             const std::string& label) {
+            cells.push_back(std::make_unique<Cell>(Cell{
+                &s, size, renderer, o, simd, s.name + "/" + std::to_string(size) + "/" + label}));
+            return cells.back().get();
+        };
+        // 1. The steps, on lesson 07's scene and on the globe.
+        std::vector<std::pair<const Cell*, std::string>> step_cells;  // cell, its step's label
+        const std::vector<Step> ladder = steps(scalar, simd_sets);
+        for (int k = 0; k < 2; ++k) {
+            const Scene& s = scenes[static_cast<std::size_t>(k)];
+            step_cells.push_back(
+                {add(s, step_size, "lesson 07", {}, 0, "step/lesson 07"), "lesson 07"});
+            for (const Step& step : ladder)
+                step_cells.push_back(
+                    {add(s, step_size, "fast", step.options, step.simd, "step/" + step.label),
+                     step.label});
+            if (peer)
+                step_cells.push_back(
+                    {add(s, step_size, "llvmpipe", {}, 0, "step/llvmpipe"), "llvmpipe, 2 threads"});
+        }
+        // 2. The sizes.
+        fast::FastOptions one_thread;
+        one_thread.threads = 1;
+        std::vector<const Cell*> size_cells;
+        for (const Scene& s : scenes)
+            for (int size : sizes) {
+                size_cells.push_back(add(s, size, "fast", {}, 0, "fast, 2 threads"));
+                size_cells.push_back(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
+                if (peer)
+                    size_cells.push_back(add(s, size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
+                size_cells.push_back(add(s, size, "floor", {}, 0, "floor"));
+                if (&s == &scenes[0])
+                    size_cells.push_back(add(s, size, "lesson 07", {}, 0, "lesson 07, 1 thread"));
+            }
+        // 3. The triangle counts.
+        std::vector<Scene> spheres;
+        const std::vector<int> segments = options.quick
+                                              ? std::vector<int>{8, 16}
+                                              : std::vector<int>{32, 64, 128, 256, 512, 1000, 1414};
+        spheres.reserve(segments.size());
+        for (int n : segments)
+            spheres.push_back({std::to_string(n * n) + " triangles",
+                               {sphere_with_globe_maps(globe, n)},
+                               filling_the_frame()});
+        std::vector<const Cell*> triangle_cells;
+        for (const Scene& s : spheres) {
+            triangle_cells.push_back(add(s, step_size, "fast", {}, 0, "fast, 2 threads"));
+            if (peer)
+                triangle_cells.push_back(
+                    add(s, step_size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
+        }
+        for (auto& c : cells) register_cell(*c);
+        const auto timings = rl::lab::run_benchmarks();
+        const auto ms = [&](const Cell* c) { return timings.at(c->name).median_ns / 1e6; };
+        const auto ms_min = [&](const Cell* c) { return timings.at(c->name).min_ns / 1e6; };
+        const auto ms_max = [&](const Cell* c) { return timings.at(c->name).max_ns / 1e6; };
+
+        // 1. The steps, each image against lesson 07's.
+        rl::ResultsTable steps_table({"scene", "step", "ms_per_frame", "ms_min", "ms_max",
+                                      "times_faster_than_lesson_07", "max_abs_vs_lesson_07",
+                                      "percent_off_by_more_than_1"});
+        std::map<const Scene*, double> lesson07_ms;
+        for (const auto& [c, label] : step_cells) {
+            if (c->renderer == "lesson 07") lesson07_ms[c->scene] = ms(c);
+            std::optional<rl::Image> image;
+            const rl::Image expected = lesson07_frame(*c->scene, c->size, c->options.render);
+            if (c->renderer == "fast") image = fast_frame(*c->scene, c->size, c->options, c->simd);
+            if (c->renderer == "llvmpipe")
+                image = llvmpipe_frame(*c->scene, c->size, c->options.render);
+            if (c->renderer == "lesson 07") image = expected;
+            const rl::ImageDiff d = rl::compare_images(expected, *image, 1);
+            steps_table.add_row({c->scene->name, label, ms(c), ms_min(c), ms_max(c),
+                                 lesson07_ms.at(c->scene) / ms(c),
+                                 static_cast<long long>(d.max_abs), 100 * d.share_over});
+        }
+        // 2. The sizes: each against the floor, ours against llvmpipe.
+        rl::ResultsTable sizes_table({"scene", "size", "renderer", "ms_per_frame", "ms_min",
+                                      "ms_max", "times_the_floor", "times_llvmpipe",
+                                      "percent_differing_from_llvmpipe"});
+        std::map<std::pair<const Scene*, int>, double> floor_ms, peer_ms;
+        for (const Cell* c : size_cells) {
+            if (c->renderer == "floor") floor_ms[{c->scene, c->size}] = ms(c);
+            if (c->renderer == "llvmpipe") peer_ms[{c->scene, c->size}] = ms(c);
+        }
+        std::map<std::pair<const Scene*, int>, double> differing;
+        if (peer)
+            for (const Scene& s : scenes)
+                for (int size : sizes) {
+                    const rl::Image ours = fast_frame(s, size, {}, 0);
+                    differing[{&s, size}] =
+                        100 * rl::compare_images(ours, *llvmpipe_frame(s, size, {}), 8).share_over;
+                }
+        for (const Cell* c : size_cells) {
+            const std::pair<const Scene*, int> key{c->scene, c->size};
+            const bool ours = c->renderer == "fast";
+            sizes_table.add_row({c->scene->name, static_cast<long long>(c->size),
+                                 c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
+                                 ms_max(c), ms(c) / floor_ms.at(key),
+                                 ours && peer ? ms(c) / peer_ms.at(key) : NAN,
+                                 ours && peer ? differing.at(key) : NAN});
+        }
+        // 3. The triangle counts.
+        rl::ResultsTable triangles_table({"triangles", "renderer", "ms_per_frame", "ms_min",
+                                          "ms_max", "million_triangles_per_s"});
+        for (const Cell* c : triangle_cells) {
+            const double triangles =
+                static_cast<double>(c->scene->models[0].lit.model.mesh.faces.size());
+            triangles_table.add_row({static_cast<long long>(triangles),
+                                     c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
+                                     ms_max(c), triangles / ms(c) / 1e3});
+        }
+        // 4. Where the time goes: the stage timers, averaged over an orbit
+        // after a first frame (the tiles' split is summed over both threads,
+        // so it is shown per thread).
+        rl::ResultsTable stages_table({"scene", "size", "stage", "ms_per_frame"});
+        for (const Scene& s : scenes)
+            for (int size : {step_size, sizes.back()}) {
+                fast::Renderer renderer(s.models, size, size, {});
+                renderer.render(s.camera);
+                fast::StageTimes sum;
+                double raster = 0, shade = 0, resolve = 0;
+                for (int f = 0; f < kOrbitFrames; ++f) {
+                    const fast::FrameCounts counts =
+                        renderer.render(fast::orbit(s.camera, f, kOrbitFrames));
+                    const fast::StageTimes& t = renderer.times();
+                    sum.vertex += t.vertex, sum.setup += t.setup, sum.binning += t.binning;
+                    sum.tiles += t.tiles;
+                    raster += static_cast<double>(counts.tiles.raster_ns) / 1e6 / kThreads;
+                    shade += static_cast<double>(counts.tiles.shade_ns) / 1e6 / kThreads;
+                    resolve += static_cast<double>(counts.tiles.resolve_ns) / 1e6 / kThreads;
+                }
+                const auto row = [&](const char* stage, double total) {
+                    stages_table.add_row(
+                        {s.name, static_cast<long long>(size), stage, total / kOrbitFrames});
+                };
+                row("vertex stage", sum.vertex);
+                row("cull, clip, set-up", sum.setup);
+                row("binning", sum.binning);
+                row("tiles: clear and visibility pass (per thread)", raster);
+                row("tiles: shading (per thread)", shade);
+                row("tiles: resolve into the frame (per thread)", resolve);
+                row("tiles, in all (clock)", sum.tiles);
+            }
+        steps_table.write_csv(options.out_dir / "12_steps.csv");
+        sizes_table.write_csv(options.out_dir / "12_sizes.csv");
+        triangles_table.write_csv(options.out_dir / "12_triangles.csv");
+        stages_table.write_csv(options.out_dir / "12_stages.csv");
+        std::printf("wrote 12_steps.csv, 12_sizes.csv, 12_triangles.csv and 12_stages.csv to %s\n",
+                    options.out_dir.string().c_str());
+        return 0;
+    });
+}
