@@ -20,6 +20,10 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   07_tbn_frame.svg           a triangle in the texture and on the surface, with T and B
   08_two_passes.svg          the light's box and its map, the camera's frustum, a point in shadow
   08_acne.svg                a tilted surface against the map's stored depths: acne, and the bias
+  12_tiles_and_bins.svg      a frame cut into tiles, each tile's bin of triangles, the owning thread
+  12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
+  12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
+  12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
 """
 import math
 import pathlib
@@ -676,13 +680,182 @@ def acne(out):
     save(figure, out, "08_acne.svg")
 
 
+def edge_inside(tri, px, py):
+    """Whether (px, py) is inside the counter-clockwise triangle (float, for the figures)."""
+    for k in range(3):
+        (ax, ay), (bx, by) = tri[(k + 1) % 3], tri[(k + 2) % 3]
+        if (bx - ax) * (py - ay) - (by - ay) * (px - ax) < 0:
+            return False
+    return True
+
+
+def tiles_and_bins(out):
+    # A 16 x 12 frame in tiles of 4: three triangles, each binned into the
+    # tiles its bounding box touches; tiles shaded by the thread that took
+    # them in one run (which thread takes which varies from run to run).
+    figure, axes = plt.subplots(figsize=(7.6, 4.4))
+    width, height, tile = 16, 12, 4
+    triangles = [((1, 1), (7, 2), (3, 6)), ((6, 5), (14, 3), (11, 10)), ((2, 8), (8, 7), (5, 11.5))]
+    colours = ["#d04020", "#2060c0", "#30a050"]
+    bins = {}
+    for index, tri in enumerate(triangles):
+        xs, ys = [v[0] for v in tri], [v[1] for v in tri]
+        for ty in range(int(min(ys)) // tile, int(max(ys)) // tile + 1):
+            for tx in range(int(min(xs)) // tile, int(max(xs)) // tile + 1):
+                bins.setdefault((tx, ty), []).append(index)
+    for ty in range(height // tile):
+        for tx in range(width // tile):
+            n = ty * (width // tile) + tx
+            axes.add_patch(Rectangle((tx * tile, ty * tile), tile, tile,
+                                     color="#f4f4f4" if n % 2 == 0 else "#e4e8f0", ec="#888888", lw=0.8))
+            names = ",".join(str(i) for i in bins.get((tx, ty), [])) or "-"
+            axes.text(tx * tile + 0.2, ty * tile + tile - 0.5, f"bin: {names}", fontsize=7, color=INK)
+            axes.text(tx * tile + tile - 0.2, ty * tile + 0.3, f"thread {n % 2}", fontsize=6,
+                      color="#777777", ha="right")
+    for index, (tri, colour) in enumerate(zip(triangles, colours)):
+        axes.add_patch(Polygon(tri, closed=True, color=colour, alpha=0.45))
+        xs, ys = [v[0] for v in tri], [v[1] for v in tri]
+        axes.add_patch(Rectangle((min(xs), min(ys)), max(xs) - min(xs), max(ys) - min(ys), fill=False,
+                                 ec=colour, lw=0.8, ls="--"))
+        axes.text(sum(xs) / 3, sum(ys) / 3, str(index), color="white", fontsize=10, ha="center", va="center",
+                  weight="bold")
+    axes.set_xlim(-0.2, width + 0.2)
+    axes.set_ylim(-0.2, height + 0.2)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    axes.set_title("Binning: each triangle goes to every tile its box (dashed) touches, in drawing order;\n"
+                   "a tile is then drawn from its bin alone by whichever thread takes it, sharing nothing", fontsize=9)
+    save(figure, out, "12_tiles_and_bins.svg")
+
+
+def blocks(out):
+    # A 32 x 24 tile of 8 x 8 blocks and one triangle; each block decided from
+    # its corner centres as the kernel decides it: outside one edge at all four
+    # (rejected), inside all three at all four (accepted whole), else per pixel.
+    figure, axes = plt.subplots(figsize=(6.8, 5.0))
+    tri = ((2.3, 1.6), (29.5, 6.2), (9.4, 22.7))
+    size_x, size_y, block = 32, 24, 8
+    counts = {"rejected": 0, "whole": 0, "per pixel": 0}
+    for by in range(size_y // block):
+        for bx in range(size_x // block):
+            corners = [(bx * block + cx + 0.5, by * block + cy + 0.5) for cx in (0, 7) for cy in (0, 7)]
+            rejected = False
+            inside = True
+            for k in range(3):
+                (ax, ay), (bx2, by2) = tri[(k + 1) % 3], tri[(k + 2) % 3]
+                values = [(bx2 - ax) * (py - ay) - (by2 - ay) * (px - ax) for px, py in corners]
+                rejected |= max(values) < 0
+                inside &= min(values) > 0
+            kind = "rejected" if rejected else "whole" if inside else "per pixel"
+            counts[kind] += 1
+            colour = {"rejected": "#f4f4f4", "whole": "#b8e0b8", "per pixel": "#f8d8a8"}[kind]
+            axes.add_patch(Rectangle((bx * block, by * block), block, block, color=colour, ec="#666666", lw=1))
+            if kind == "per pixel":
+                for y in range(by * block, by * block + block):
+                    for x in range(bx * block, bx * block + block):
+                        if edge_inside(tri, x + 0.5, y + 0.5):
+                            axes.plot(x + 0.5, y + 0.5, "s", color="#c07010", ms=3)
+    axes.add_patch(Polygon(tri, closed=True, fill=False, ec=INK, lw=1.4))
+    axes.set_xlim(-0.3, size_x + 0.3)
+    axes.set_ylim(-0.3, size_y + 0.3)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    axes.set_title(f"8x8 blocks: {counts['rejected']} rejected and {counts['whole']} accepted from their corners "
+                   f"(grey, green),\n{counts['per pixel']} tested pixel by pixel (orange: the centres inside)",
+                   fontsize=9)
+    save(figure, out, "12_blocks.svg")
+
+
+def visibility_buffer(out):
+    # Three overlapping triangles drawn far to near on a 16 x 12 grid. Left:
+    # shaded at every pixel that passes the depth test (how many times each
+    # pixel was shaded). Right: pass 1 keeps the id of the nearest triangle
+    # per pixel, pass 2 shades each pixel once, with that triangle.
+    width, height = 16, 12
+    triangles = [((0.5, 0.5), (15.5, 1.5), (8, 11.5)), ((2, 3), (13, 2.5), (7, 10)), ((4, 5), (11, 4), (8, 9))]
+    colours = ["#d04020", "#2060c0", "#30a050"]
+    shaded = [[0] * width for _ in range(height)]
+    owner = [[-1] * width for _ in range(height)]
+    for index, tri in enumerate(triangles):  # far to near: every later one passes
+        for y in range(height):
+            for x in range(width):
+                if edge_inside(tri, x + 0.5, y + 0.5):
+                    shaded[y][x] += 1
+                    owner[y][x] = index
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.4, 3.6))
+    total_left = sum(map(sum, shaded))
+    total_right = sum(1 for row in owner for o in row if o >= 0)
+    for y in range(height):
+        for x in range(width):
+            n = shaded[y][x]
+            left.add_patch(Rectangle((x, y), 1, 1, color=["#ffffff", "#f8e0c0", "#f0b070", "#d07020"][n],
+                                     ec="#cccccc", lw=0.4))
+            if n:
+                left.text(x + 0.5, y + 0.5, str(n), fontsize=6, ha="center", va="center")
+            o = owner[y][x]
+            right.add_patch(Rectangle((x, y), 1, 1, color=colours[o] if o >= 0 else "#ffffff", alpha=0.55,
+                                      ec="#cccccc", lw=0.4))
+    for axes in (left, right):
+        for tri in triangles:
+            axes.add_patch(Polygon(tri, closed=True, fill=False, ec=INK, lw=0.8))
+        axes.set_xlim(0, width)
+        axes.set_ylim(0, height)
+        axes.set_aspect("equal")
+        axes.axis("off")
+    left.set_title(f"shaded where the depth test passes:\n{total_left} shader runs (the number: runs per pixel)",
+                   fontsize=8)
+    right.set_title(f"depth and triangle id first, then shade:\n{total_right} shader runs, one per covered pixel",
+                    fontsize=8)
+    save(figure, out, "12_visibility_buffer.svg")
+
+
+def lane_queue(out):
+    # One triangle's pixels in four 8x8 blocks (one row of vectors of 16
+    # lanes each, two block rows): shaded vector by vector, most lanes idle;
+    # queued and compressed, every vector but the last is full.
+    tri = ((1.2, 0.6), (30.5, 3.1), (3.4, 7.4))
+    pixels = [(x, y) for y in range(8) for x in range(32) if edge_inside(tri, x + 0.5, y + 0.5)]
+    lanes = 16
+    chunks = []  # per block, per pair of rows: the pixels of the triangle there
+    for bx in range(4):
+        for pair in range(4):
+            chunk = [(x, y) for (x, y) in pixels if bx * 8 <= x < bx * 8 + 8 and 2 * pair <= y < 2 * pair + 2]
+            if chunk:
+                chunks.append(chunk)
+    figure, (top, bottom) = plt.subplots(2, 1, figsize=(8.2, 3.8))
+    for i, chunk in enumerate(chunks):
+        for lane in range(lanes):
+            top.add_patch(Rectangle((lane, -i), 1, 0.8, color=ACCENT if lane < len(chunk) else "#eeeeee",
+                                    ec="#999999", lw=0.3))
+    queued = len(pixels)
+    full = (queued + lanes - 1) // lanes
+    for i in range(full):
+        for lane in range(lanes):
+            used = i * lanes + lane < queued
+            bottom.add_patch(Rectangle((lane, -i), 1, 0.8, color=LINE if used else "#eeeeee", ec="#999999", lw=0.3))
+    used_top = 100 * queued / (len(chunks) * lanes)
+    used_bottom = 100 * queued / (full * lanes)
+    for axes, rows, title in (
+            (top, len(chunks), f"vector by vector of each block: {len(chunks)} shader runs, {used_top:.0f}% of lanes used"),
+            (bottom, full, f"queued and compressed: {full} shader runs, {used_bottom:.0f}% of lanes used")):
+        axes.set_xlim(-0.2, lanes + 0.2)
+        axes.set_ylim(-rows + 0.6, 1.0)
+        axes.set_aspect("equal")
+        axes.axis("off")
+        axes.set_title(title, fontsize=8)
+    figure.suptitle(f"A sliver's {queued} pixels across four 8x8 blocks, 16 lanes a vector (AVX-512 floats)",
+                    fontsize=9)
+    save(figure, out, "12_lane_queue.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
-                 mirrored_seam, tbn_frame, two_passes, acne):
+                 mirrored_seam, tbn_frame, two_passes, acne, tiles_and_bins, blocks, visibility_buffer,
+                 lane_queue):
         draw(out)
 
 

@@ -17,8 +17,8 @@ namespace fast {
 
 // Empty optional when the fast path refuses the triangle (as lesson 02 does
 // beyond 2^22 pixels or with NaN); otherwise the pixels, row by row.
-std::optional<std::vector<std::pair<int, int>>> covered_pixels(
-    const triangles::ScreenTriangle& t, int width, int height, int tile_size,
-    const Techniques& techniques);
+std::optional<std::vector<std::pair<int, int>>> covered_pixels(const triangles::ScreenTriangle& t,
+                                                               int width, int height, int tile_size,
+                                                               const Techniques& techniques);
 
 }  // namespace fast
