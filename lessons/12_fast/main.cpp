@@ -98,7 +98,7 @@ int main(int argc, char** argv) {
             100.0 * diff.share_over);
         if (!peer_output.empty()) rl::save_image(peer_output, peer_frame);
 #else
-        std::printf("llvmpipe peer skipped: built without OSMesa (libosmesa6-dev)\n");
+        std::printf("llvmpipe peer skipped: this build has none (OSMesa, libosmesa6-dev, missing; or a sanitized build)\n");
 #endif
         return 0;
     });

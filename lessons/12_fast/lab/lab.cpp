@@ -159,7 +159,9 @@ bool peer_available() {
         return false;
     }
 #else
-    std::printf("llvmpipe peer skipped: built without OSMesa (libosmesa6-dev)\n");
+    std::printf(
+        "llvmpipe peer skipped: this build has none (OSMesa, libosmesa6-dev, missing; or a "
+        "sanitized build)\n");
     return false;
 #endif
 }
