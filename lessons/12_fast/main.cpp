@@ -52,7 +52,6 @@ int main(int argc, char** argv) {
     return rl::guarded_main("12_fast", [&] {
         rl::check_image_output(output);
         if (!peer_output.empty()) rl::check_image_output(peer_output);
-        options.render = cli.options;
         normal_mapping::MappedScene scene =
             normal_mapping::load_scene(cli, width, height, "12_fast");
         options.render = cli.options;  // with the lighting and output load_scene set

@@ -35,15 +35,13 @@ using VU = hn::Vec<DU>;
 using MF = hn::Mask<DF>;
 
 // The slots of a block: column (slot % 8) and row (slot / 8), as floats
-// and as the bits of a 64-bit coverage word.
+// (slot = row * 8 + column, the bit of a 64-bit coverage word).
 struct SlotTables {
     alignas(64) float column[64], row[64];
-    alignas(64) std::int64_t column64[64];
     SlotTables() {
         for (int s = 0; s < 64; ++s) {
             column[s] = static_cast<float>(s % kBlock);
             row[s] = static_cast<float>(s / kBlock);
-            column64[s] = s % kBlock;
         }
     }
 };
@@ -100,7 +98,6 @@ HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, b
     const D64 d64;
     const std::size_t n = hn::Lanes(d64);
     std::uint64_t coverage = 0;
-    const SlotTables& s = slots();
     for (int k = 0; k < 3; ++k) {
         const std::int64_t step_x = -t.edge_dy[k] * triangles::kSubpixels;
         const std::int64_t step_y = t.edge_dx[k] * triangles::kSubpixels;
@@ -126,7 +123,6 @@ HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, b
         coverage = k == 0 ? inside : (coverage & inside);
         if (coverage == 0) break;
     }
-    (void)s;
     return coverage;
 }
 
