@@ -321,9 +321,15 @@ HWY_INLINE VI wrap(VI i, VI size) {
 HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF v, bool bilinear,
                               int channels) {
     const DI di;
-    const VI width = hn::GatherIndex(di, t.level_width, level);
-    const VI height = hn::GatherIndex(di, t.level_height, level);
-    const VI offset = hn::GatherIndex(di, t.level_offset, level);
+    // Neighbouring pixels mostly share a level: then one lookup serves all lanes.
+    const std::int32_t first = hn::GetLane(level);
+    const bool one_level = hn::AllTrue(di, hn::Eq(level, hn::Set(di, first)));
+    const VI width =
+        one_level ? hn::Set(di, t.level_width[first]) : hn::GatherIndex(di, t.level_width, level);
+    const VI height =
+        one_level ? hn::Set(di, t.level_height[first]) : hn::GatherIndex(di, t.level_height, level);
+    const VI offset =
+        one_level ? hn::Set(di, t.level_offset[first]) : hn::GatherIndex(di, t.level_offset, level);
     const VF w = hn::ConvertTo(df, width), h = hn::ConvertTo(df, height);
     // to_texels: the coordinate's fraction, times the size.
     const VF s = hn::Mul(hn::Sub(u, hn::Floor(u)), w);
