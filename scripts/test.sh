@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: scripts/test.sh [preset]
-# The preset is release (default), debug or asan; see CMakePresets.json.
+# The preset is release (default), debug, asan or tsan (lesson 12 only); see
+# CMakePresets.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"

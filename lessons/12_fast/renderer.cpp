@@ -1,9 +1,8 @@
 #include "renderer.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
+#include "workers.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 #include <optional>
@@ -75,7 +74,7 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
 struct Renderer::Impl {
     FastOptions options;
     int width, height;
-    tbb::task_arena arena;
+    Workers workers;
     std::vector<FastModel> models;
     // Per model, set once: lesson 06's uniforms (only the MVP and the eye
     // change from frame to frame) and the surface; empty for a model whose
@@ -91,14 +90,11 @@ struct Renderer::Impl {
     std::size_t tiles = 0;
     std::vector<std::uint32_t> bin_start, bin_fill, binned;
     std::vector<TileCounts> tile_counts;                // per tile
-    std::vector<std::unique_ptr<TileBuffers>> buffers;  // per thread of the arena
+    std::vector<std::unique_ptr<TileBuffers>> buffers;  // per worker thread
 
     Impl(const std::vector<normal_mapping::MappedModel>& sources, int w, int h,
          const FastOptions& o)
-        : options(o),
-          width(w),
-          height(h),
-          arena(o.threads > 0 ? o.threads : tbb::task_arena::automatic) {
+        : options(o), width(w), height(h), workers(o.threads) {
         if (o.tile_size < kBlock || o.tile_size % kBlock != 0 || o.tile_size > 1024)
             throw std::invalid_argument(
                 "the tile size must be a multiple of 8 from 8 to 1024, not " +
@@ -136,7 +132,7 @@ struct Renderer::Impl {
         bin_start.resize(tiles + 1);
         bin_fill.resize(tiles);
         tile_counts.resize(tiles);
-        for (int i = 0; i < arena.max_concurrency(); ++i)
+        for (int i = 0; i < workers.threads(); ++i)
             buffers.push_back(std::make_unique<TileBuffers>(o.tile_size));
     }
 
@@ -189,7 +185,7 @@ Renderer::Renderer(const std::vector<normal_mapping::MappedModel>& models, int w
 Renderer::~Renderer() = default;
 
 int Renderer::threads() const {
-    return impl_->arena.max_concurrency();
+    return impl_->workers.threads();
 }
 
 FrameCounts Renderer::render(const perspective::Camera& camera) {
@@ -223,17 +219,13 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         counts.faces += m.indices.size() / 3;
         const auto run = [&](std::size_t count, auto&& vertex) {
             counts.vertices += count;
-            if (!s.options.parallel) {
-                for (std::size_t v = 0; v < count; ++v) vertex(v);
-                return;
-            }
-            s.arena.execute([&] {
-                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
-                                  [&](const tbb::blocked_range<std::size_t>& range) {
-                                      for (std::size_t v = range.begin(); v != range.end(); ++v)
-                                          vertex(v);
-                                  });
-            });
+            const auto chunk = [&](const tbb::blocked_range<std::size_t>& range) {
+                for (std::size_t v = range.begin(); v != range.end(); ++v) vertex(v);
+            };
+            if (s.options.parallel)
+                s.workers.for_chunks(count, 1024, chunk);
+            else
+                chunk({0, count});
         };
         if (s.options.vertex_cache) {
             run(m.representative.size(), [&](std::size_t v) {
@@ -350,20 +342,13 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         s.tile_counts[i] = {};
         render_tile(work, buffers, frame_, s.tile_counts[i]);
     };
-    if (!s.options.parallel) {
-        for (std::size_t i = 0; i < s.tiles; ++i) draw_tile(i, *s.buffers[0]);
-    } else {
-        s.arena.execute([&] {
-            tbb::parallel_for(tbb::blocked_range<std::size_t>(0, s.tiles, 1),
-                              [&](const tbb::blocked_range<std::size_t>& range) {
-                                  // Each thread of the arena has buffers of its own.
-                                  TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(
-                                      tbb::this_task_arena::current_thread_index())];
-                                  for (std::size_t i = range.begin(); i != range.end(); ++i)
-                                      draw_tile(i, buffers);
-                              });
+    if (s.options.parallel)
+        s.workers.for_chunks(s.tiles, 1, [&](const tbb::blocked_range<std::size_t>& range) {
+            TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(Workers::this_thread())];
+            for (std::size_t i = range.begin(); i != range.end(); ++i) draw_tile(i, buffers);
         });
-    }
+    else
+        for (std::size_t i = 0; i < s.tiles; ++i) draw_tile(i, *s.buffers[0]);
     times_.tiles = milliseconds_since(start);
     for (const TileCounts& c : s.tile_counts) counts.tiles += c;
     return counts;
