@@ -93,6 +93,30 @@ TEST(Coverage, MatchesLessonTwoAcrossTileSeamsOfALargerFrame) {
     }
 }
 
+// docs/12_fast.md's worked example: the triangle (0, 0), (20, 0), (0, 20) in
+// one 64x64 tile. Of the nine 8x8 blocks its box touches, the corners accept
+// one whole, reject three and leave five to test pixel by pixel; 190 centres
+// lie inside and 20 exactly on the long edge: a right edge, so lesson 02's
+// tie rule leaves them to the triangle on its other side.
+TEST(WorkedExample, TheBlocksOfThePage) {
+    fast::Setup setup{};
+    setup.window[0] = {0, 0, 0.5f};
+    setup.window[1] = {20, 0, 0.5f};
+    setup.window[2] = {0, 20, 0.5f};
+    std::vector<fast::FastTriangle> triangles(1);
+    ASSERT_TRUE(fast::fast_triangle(setup, 0, 64, 64, triangles[0]));
+    fast::TileBuffers buffers(64);
+    const std::uint32_t bin[1] = {0};
+    const fast::TileWork work{0, 0, 64, 64, &triangles, bin, 1, nullptr, {}};
+    fast::TileCounts counts;
+    fast::rasterize_tile(work, buffers, counts);
+    EXPECT_EQ(counts.blocks_full, 1u);
+    EXPECT_EQ(counts.blocks_rejected, 3u);
+    EXPECT_EQ(counts.blocks_partial, 5u);
+    EXPECT_EQ(counts.depth_passed, 190u);
+    EXPECT_EQ(lesson02({{{0, 0}, {20, 0}, {0, 20}}}, 64, 64).size(), 190u);
+}
+
 TEST(Coverage, RefusesWhatLessonTwoRefuses) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
