@@ -25,12 +25,14 @@ bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, F
         triangles::centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
                                    to_pixels(std::max({v[0].y, v[1].y, v[2].y})), 0, height);
     o.x0 = xs.first, o.x1 = xs.last, o.y0 = ys.first, o.y1 = ys.last;
+    // [doc:edges]
     for (int k = 0; k < 3; ++k) {
         const triangles::FixedPoint a = v[(k + 1) % 3], b = v[(k + 2) % 3];
         o.edge_x[k] = a.x, o.edge_y[k] = a.y;
         o.edge_dx[k] = b.x - a.x, o.edge_dy[k] = b.y - a.y;
         o.threshold[k] = triangles::is_top_left(a, b) ? -1 : 0;
     }
+    // [/doc:edges]
     o.inverse_area = 1.0f / static_cast<float>(f.area);
     // The snapped order: lesson 02 swapped vertices 1 and 2 to make it
     // counter-clockwise; weight k of the edges belongs to input vertex order[k].

@@ -312,6 +312,7 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
             for (int tx = f.x0 / tile; tx <= f.x1 / tile; ++tx)
                 visit(static_cast<std::size_t>(ty * s.tiles_x + tx));
     };
+    // [doc:binning]
     std::fill(s.bin_start.begin(), s.bin_start.end(), 0);
     for (const FastTriangle& f : s.triangles)
         each_tile_of(f, [&](std::size_t i) { ++s.bin_start[i + 1]; });
@@ -324,6 +325,7 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
         each_tile_of(s.triangles[t], [&](std::size_t i) {
             s.binned[s.bin_fill[i]++] = static_cast<std::uint32_t>(t);
         });
+    // [/doc:binning]
     times_.binning = milliseconds_since(start);
 
     // 4. The tiles, in parallel: each one rasterized, shaded and resolved by one thread.

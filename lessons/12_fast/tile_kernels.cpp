@@ -68,6 +68,7 @@ HWY_INLINE MF mask_of(DF df, std::uint64_t coverage, int first) {
 // are at corners).
 HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, bool coarse,
                                         TileCounts& counts) {
+    // [doc:block-corners]
     std::int64_t origin[3];
     bool inside_all = true;
     for (int k = 0; k < 3; ++k) {
@@ -94,6 +95,7 @@ HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, b
         ++counts.blocks_full;
         return ~std::uint64_t{0};
     }
+    // [/doc:block-corners]
     ++counts.blocks_partial;
     const D64 d64;
     const std::size_t n = hn::Lanes(d64);
@@ -199,6 +201,7 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                 std::uint32_t* id = buffers.id.get() + base;
                 bool changed = false;
                 for (int first = 0; first < 64; first += static_cast<int>(n)) {
+                    // [doc:depth-pass]
                     const MF covered = mask_of(df, coverage, first);
                     if (hn::AllFalse(df, covered)) continue;
                     VF b[3];
@@ -218,6 +221,7 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                     const auto pass_u = hn::RebindMask(du, pass);
                     const VU old_id = hn::Load(du, id + first);
                     hn::Store(hn::IfThenElse(pass_u, hn::Set(du, index), old_id), du, id + first);
+                    // [/doc:depth-pass]
                     if (!use.shade_once) {
                         std::uint32_t* colour = buffers.colour.get() + base + first;
                         const VU rgba = shade(df, work.materials[t.model], t, b);
@@ -664,6 +668,7 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                 const std::uint32_t* id = buffers.id.get() + base;
                 const VF block_x = hn::Set(df, static_cast<float>(bx * kBlock));
                 const VF block_y = hn::Set(df, static_cast<float>(by * kBlock));
+                // [doc:lane-queue]
                 for (int first = 0; first < 64; first += static_cast<int>(n)) {
                     const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
                     if (hn::AllFalse(du, mine)) continue;
@@ -682,6 +687,7 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                         std::copy_n(queue_y + n, queued, queue_y);
                     }
                 }
+                // [/doc:lane-queue]
             }
         if (queued > 0) shade_queued(queued);
     }
