@@ -36,15 +36,31 @@ run_target() {  # run_target <binary> <seed folder> <max input bytes> [libFuzzer
     echo
 }
 
+# The targets run two at a time (libFuzzer runs on one core; this machine
+# has two), each for the full time: FUZZ_JOBS sets how many at once.
+jobs_at_once="${FUZZ_JOBS:-2}"
 status=0
-run_target build-fuzz/tests/fuzz/fuzz_tga tests/fuzz/corpus/tga 65536 || status=1
-run_target build-fuzz/tests/fuzz/fuzz_obj tests/fuzz/corpus/obj 16384 || status=1
-run_target build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture 65536 || status=1
-run_target build-fuzz/tests/fuzz/fuzz_clipper tests/fuzz/corpus/clipper 48 || status=1
+running=0
+start() {  # start <run_target arguments...>: in the background, at most jobs_at_once
+    run_target "$@" &
+    running=$((running + 1))
+    if [ "$running" -ge "$jobs_at_once" ]; then
+        wait -n || status=1
+        running=$((running - 1))
+    fi
+}
+start build-fuzz/tests/fuzz/fuzz_tga tests/fuzz/corpus/tga 65536
+start build-fuzz/tests/fuzz/fuzz_obj tests/fuzz/corpus/obj 16384
+start build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture 65536
+start build-fuzz/tests/fuzz/fuzz_clipper tests/fuzz/corpus/clipper 48
 for cli in build-fuzz/tests/fuzz/fuzz_cli_*; do
     # The lessons print a line per run and an error per refused option: keep
     # stdout closed (-close_fd_mask=1); libFuzzer's own report goes to stderr.
-    run_target "$cli" tests/fuzz/corpus/cli 512 -close_fd_mask=1 || status=1
+    start "$cli" tests/fuzz/corpus/cli 512 -close_fd_mask=1
+done
+while [ "$running" -gt 0 ]; do
+    wait -n || status=1
+    running=$((running - 1))
 done
 if [ "$status" -ne 0 ]; then
     echo "fuzz: findings above"

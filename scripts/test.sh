@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: scripts/test.sh [preset]
-# The preset is release (default), debug, asan or tsan (lesson 12 only); see
-# CMakePresets.json.
+# The preset is release (default), debug, asan, fuzz (clang, ASan and UBSan,
+# with the libFuzzer targets) or tsan (lesson 12 only); see CMakePresets.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 preset="${1:-release}"
 
-scripts/setup.sh
+if [ "$preset" = fuzz ]; then scripts/setup.sh fuzz; else scripts/setup.sh; fi
 cmake --preset "$preset"
 cmake --build --preset "$preset"
 ctest --preset "$preset"

@@ -166,7 +166,7 @@ HWY_INLINE BlockRange blocks_of(const FastTriangle& t, const TileWork& work) {
 // The visibility pass: depth and the id of the nearest triangle at every
 // pixel (or, without shade_once, each passing pixel shaded at once, as
 // lesson 07 does).
-HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]);
+HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]);
 
 void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DF df;
@@ -473,7 +473,7 @@ HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
 
 // Lesson 07's NormalMappedShader::fragment() for N pixels: varyings in, RGBA
 // words out.
-HWY_INLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]) {
+HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]) {
     // Lesson 05's fragment_at: b . (varyings / w) times 1 / (b . 1/w).
     const VF inverse_w = hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.inverse_w[0])),
                                          hn::Mul(b[1], hn::Set(df, t.inverse_w[1]))),
