@@ -32,9 +32,10 @@ int main(int argc, char** argv) {
     rl::add_image_options(app, image_options);
     app.add_option("--frames", frames,
                    "Frames to render, the camera orbiting the target once; the last one is the "
-                   "view the camera options give, and is written (1 to 100000)")
+                   "view the camera options give, and is written (1 to 1000: each frame "
+                   "sets up every triangle again, whatever the image size)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 100000));
+        ->check(CLI::Range(1, 1000));
     app.add_option("--threads", options.threads, "Threads (0: one per core, up to 256)")
         ->capture_default_str()
         ->check(CLI::Range(0, 256));
