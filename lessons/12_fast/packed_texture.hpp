@@ -5,8 +5,8 @@
 // the very texels lesson 07 reads.
 //
 //   const fast::PackedTexture packed(chain);   // once, outside the frame loop
-//   packed.texels[packed.level_offset[2] + y * packed.level_width[2] + x]  // texel (x, y) of level
-//   2
+//   packed.texels[packed.level_offset[2] + y * packed.level_stride[2] + x]  // texel (x, y) of
+//   level 2 (each row holds a copy of its first texel at its end: stride = width + 1)
 #pragma once
 
 #include <cstdint>
@@ -31,7 +31,8 @@ struct PackedTexture {
     std::vector<std::uint32_t> blue_words;
     // Per level (padded to kMaxLevels with the last level, so that a gather
     // with a clamped index never reads past the table):
-    std::int32_t level_offset[kMaxLevels], level_width[kMaxLevels], level_height[kMaxLevels];
+    std::int32_t level_offset[kMaxLevels], level_width[kMaxLevels], level_height[kMaxLevels],
+        level_stride[kMaxLevels];
     int levels = 0;
 };
 
