@@ -38,16 +38,8 @@ int main(int argc, char** argv) {
         options.light = perspective::light_direction(view);
         options.lighting = !no_light;
         std::vector<std::string> warnings;
-        std::vector<perspective::TexturedModel> models;
-        if (view.models.empty()) models = perspective::default_scene(warnings);
-        for (const std::string& path : view.models)  // as stored: the identity model matrix
-            models.push_back(perspective::load_model(path, rl::mat4::identity(), warnings));
+        const auto [models, camera] = perspective::load_scene(view, width, height, warnings);
         rl::print_warnings("05_perspective", warnings);
-
-        const float aspect = static_cast<float>(width) / static_cast<float>(height);
-        const perspective::Camera camera =
-            perspective::resolve_camera(view, perspective::scene_bounds(models), aspect);
-        rl::print_warnings("05_perspective", {perspective::depth_precision_warning(camera)});
 
         perspective::ColourTarget frame = perspective::colour_target(width, height);
         const perspective::PipelineCounts counts =

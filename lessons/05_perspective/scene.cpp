@@ -41,6 +41,24 @@ Box scene_bounds(const std::vector<TexturedModel>& models) {
     return box;
 }
 
+Camera view_camera(const ViewOptions& view, const Box& box, int width, int height,
+                   std::vector<std::string>& warnings) {
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const Camera camera = resolve_camera(view, box, aspect);
+    warnings.push_back(depth_precision_warning(camera));
+    return camera;
+}
+
+ViewedScene<TexturedModel> load_scene(const ViewOptions& view, int width, int height,
+                                      std::vector<std::string>& warnings) {
+    ViewedScene<TexturedModel> scene;
+    if (view.models.empty()) scene.models = default_scene(warnings);
+    for (const std::string& path : view.models)
+        scene.models.push_back(load_model(path, rl::mat4::identity(), warnings));
+    scene.camera = view_camera(view, scene_bounds(scene.models), width, height, warnings);
+    return scene;
+}
+
 namespace {
 
 // Lesson 02's flat Lambert term of every face, in world space.

@@ -17,6 +17,7 @@
 #include "02_triangles/flat_shading.hpp"
 #include "04_textures/sampling.hpp"
 #include "pipeline.hpp"
+#include "view_options.hpp"
 
 namespace perspective {
 
@@ -40,6 +41,24 @@ TexturedModel load_model(const std::filesystem::path& path, const rl::mat4& tran
 std::vector<TexturedModel> default_scene(std::vector<std::string>& warnings);
 
 Box scene_bounds(const std::vector<TexturedModel>& models);
+
+// The camera a view asks for, framing `box` for a width x height image; the
+// warning for a near / far ratio too small for depth precision, if any, is
+// added to `warnings`. Throws std::invalid_argument naming the option for an
+// unusable camera.
+Camera view_camera(const ViewOptions& view, const Box& box, int width, int height,
+                   std::vector<std::string>& warnings);
+
+// What a lesson program draws: the lesson's default scene, or the view's
+// models as stored (the identity model matrix), and the camera that frames
+// them. Shared by the program and the Python module.
+template <class Model>
+struct ViewedScene {
+    std::vector<Model> models;
+    Camera camera;
+};
+ViewedScene<TexturedModel> load_scene(const ViewOptions& view, int width, int height,
+                                      std::vector<std::string>& warnings);
 
 // Where the mip level comes from: each pixel's own UV derivatives (exact
 // under perspective), or one affine estimate per triangle as in lesson 04.

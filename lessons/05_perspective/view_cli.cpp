@@ -39,9 +39,4 @@ void add_view_options(CLI::App& app, ViewOptions& view, const std::string& defau
     rl::add_light_option(app, view.light);
 }
 
-rl::vec3 light_direction(const ViewOptions& view) {
-    rl::check_direction("--light", view.light);
-    return {view.light[0], view.light[1], view.light[2]};
-}
-
 }  // namespace perspective

@@ -19,7 +19,4 @@ namespace perspective {
 // `default_scene` says in --help what runs without --model.
 void add_view_options(CLI::App& app, ViewOptions& view, const std::string& default_scene);
 
-// --light as a direction; throws std::invalid_argument for 0 0 0.
-rl::vec3 light_direction(const ViewOptions& view);
-
 }  // namespace perspective

@@ -3,6 +3,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "rasterlab/direction.hpp"
+
 namespace perspective {
 
 namespace {
@@ -41,5 +43,10 @@ Camera resolve_camera(const ViewOptions& view, const Box& box, float aspect) {
     return camera;
 }
 // [/doc:resolve-camera]
+
+rl::vec3 light_direction(const ViewOptions& view) {
+    rl::check_direction("--light", view.light);
+    return to_vec3(view.light);
+}
 
 }  // namespace perspective

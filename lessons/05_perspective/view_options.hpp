@@ -35,4 +35,8 @@ struct ViewOptions {
 // Throws std::invalid_argument naming the option when the camera is unusable.
 Camera resolve_camera(const ViewOptions& view, const Box& box, float aspect);
 
+// The light direction the options give; throws std::invalid_argument naming
+// --light for one that cannot be normalised (0 0 0).
+rl::vec3 light_direction(const ViewOptions& view);
+
 }  // namespace perspective

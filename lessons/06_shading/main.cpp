@@ -42,25 +42,11 @@ int main(int argc, char** argv) {
         if (one_light) options.lighting.lights.resize(1);
         options.lighting.shininess = shininess;
         std::vector<std::string> warnings;
-        std::vector<shading::LitModel> models;
-        if (view.models.empty())
-            models = shading::default_scene(options.output, weighting, warnings);
-        for (const std::string& path : view.models)  // as stored: the identity model matrix
-            models.push_back(shading::load_lit_model(path, rl::mat4::identity(), options.output,
-                                                     weighting, warnings));
+        const auto [models, camera] =
+            shading::load_scene(view, options.output, weighting, width, height, warnings);
         rl::print_warnings("06_shading", warnings);
         std::size_t computed = 0;
         for (const shading::LitModel& m : models) computed += m.computed_normals;
-
-        const perspective::Box box = [&] {
-            perspective::Box b;
-            for (const shading::LitModel& m : models)
-                b.add(perspective::bounds(m.model.mesh, m.model.transform));
-            return b;
-        }();
-        const float aspect = static_cast<float>(width) / static_cast<float>(height);
-        const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
-        rl::print_warnings("06_shading", {perspective::depth_precision_warning(camera)});
         perspective::ColourTarget frame = perspective::colour_target(width, height);
         const perspective::PipelineCounts counts = shading::render(models, camera, options, frame);
         rl::save_image(output, frame.colour());

@@ -28,6 +28,21 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
     return models;
 }
 
+perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
+                                              Weighting weighting, int width, int height,
+                                              std::vector<std::string>& warnings) {
+    perspective::ViewedScene<LitModel> scene;
+    if (view.models.empty()) scene.models = default_scene(output, weighting, warnings);
+    for (const std::string& path : view.models)
+        scene.models.push_back(
+            load_lit_model(path, rl::mat4::identity(), output, weighting, warnings));
+    perspective::Box box;
+    for (const LitModel& m : scene.models)
+        box.add(perspective::bounds(m.model.mesh, m.model.transform));
+    scene.camera = perspective::view_camera(view, box, width, height, warnings);
+    return scene;
+}
+
 std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection,
                             const perspective::Camera& camera, const Lighting<float>& lighting,
                             const textures::SamplerState& sampler, bool cull_objects,

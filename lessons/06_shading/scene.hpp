@@ -26,6 +26,12 @@ LitModel load_lit_model(const std::filesystem::path& path, const rl::mat4& trans
 std::vector<LitModel> default_scene(Output output, Weighting weighting,
                                     std::vector<std::string>& warnings);
 
+// The default scene (or the view's models, as stored) and the camera framing
+// it, as lesson 06's program draws them.
+perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
+                                              Weighting weighting, int width, int height,
+                                              std::vector<std::string>& warnings);
+
 struct ShadingOptions {
     perspective::PipelineOptions pipeline;
     bool cull_objects = true;  // skip a model whose bounding box is outside the frustum

@@ -21,24 +21,9 @@ void add_mapped_options(CLI::App& app, MappedCli& cli, const std::string& defaul
 }
 
 MappedScene load_scene(MappedCli& cli, int width, int height, const char* program) {
-    RenderOptions& options = cli.options;
-    options.lighting = shading::default_lighting(perspective::light_direction(cli.view));
-    if (cli.one_light) options.lighting.lights.resize(1);
-    options.output = cli.naive ? shading::Output::naive : shading::Output::srgb;
     std::vector<std::string> warnings;
-    MappedScene scene;
-    if (cli.view.models.empty())
-        scene.models = default_scene(cli.tangents, warnings, options.output, options.normal_map);
-    for (const std::string& path : cli.view.models)  // as stored: the identity model matrix
-        scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), cli.tangents, warnings,
-                                                 options.output, options.normal_map));
+    MappedScene scene = load_scene(cli, width, height, warnings);
     rl::print_warnings(program, warnings);
-    perspective::Box box;
-    for (const MappedModel& m : scene.models)
-        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    scene.camera = perspective::resolve_camera(cli.view, box, aspect);
-    rl::print_warnings(program, {perspective::depth_precision_warning(scene.camera)});
     return scene;
 }
 

@@ -18,24 +18,13 @@
 
 namespace normal_mapping {
 
-struct MappedCli {
-    perspective::ViewOptions view;
-    RenderOptions options;
-    TangentMethod tangents = TangentMethod::split;
-    bool naive = false, one_light = false;
-};
+using MappedCli = MappedView;  // (scene.hpp)
 
 void add_mapped_options(CLI::App& app, MappedCli& cli, const std::string& default_scene);
 
-struct MappedScene {
-    std::vector<MappedModel> models;
-    perspective::Camera camera;
-};
+using MappedScene = perspective::ViewedScene<MappedModel>;
 
-// Sets the lighting and the output the options ask for, loads the default
-// scene (or the --model files, as stored), prints the loaders' warnings under
-// `program`'s name, and frames the camera for a width x height image. Throws
-// std::invalid_argument (naming the option) for a camera it cannot use.
+// normal_mapping::load_scene(), its warnings printed under `program`'s name.
 MappedScene load_scene(MappedCli& cli, int width, int height, const char* program);
 
 }  // namespace normal_mapping

@@ -29,6 +29,31 @@ std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::st
     return models;
 }
 
+perspective::Box scene_box(const std::vector<MappedModel>& models) {
+    perspective::Box box;
+    for (const MappedModel& m : models)
+        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
+    return box;
+}
+
+perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
+                                                 std::vector<std::string>& warnings) {
+    RenderOptions& options = request.options;
+    options.lighting = shading::default_lighting(perspective::light_direction(request.view));
+    if (request.one_light) options.lighting.lights.resize(1);
+    options.output = request.naive ? shading::Output::naive : shading::Output::srgb;
+    perspective::ViewedScene<MappedModel> scene;
+    if (request.view.models.empty())
+        scene.models =
+            default_scene(request.tangents, warnings, options.output, options.normal_map);
+    for (const std::string& path : request.view.models)  // as stored: the identity model matrix
+        scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), request.tangents,
+                                                 warnings, options.output, options.normal_map));
+    scene.camera =
+        perspective::view_camera(request.view, scene_box(scene.models), width, height, warnings);
+    return scene;
+}
+
 void build_mip_levels(const std::vector<MappedModel>& models) {
     for (const MappedModel& m : models) {
         m.lit.model.texture.levels();

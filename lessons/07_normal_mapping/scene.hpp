@@ -44,6 +44,26 @@ struct RenderOptions {
 NormalMappedShader shader_for(const MappedModel& model, const shading::Placed& placed,
                               const RenderOptions& options);
 
+// The box around every model, in world space.
+perspective::Box scene_box(const std::vector<MappedModel>& models);
+
+// What lesson 07's program is asked for (by its command line, mapped_cli.hpp,
+// or the Python module's keywords): the view, the render options, the tangent
+// frames, sRGB or naive output, one light or two.
+struct MappedView {
+    perspective::ViewOptions view;
+    RenderOptions options;
+    TangentMethod tangents = TangentMethod::split;
+    bool naive = false, one_light = false;
+};
+
+// Sets the lighting and the output the view asks for in `request.options`,
+// loads the default scene (or the view's models, as stored) and frames the
+// camera for a width x height image. Throws std::invalid_argument (naming
+// the option) for a camera it cannot use.
+perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
+                                                 std::vector<std::string>& warnings);
+
 // Builds every texture's smaller mip levels now (they are built on first
 // use otherwise), so that a timed render of trilinear lookups times
 // rendering alone.

@@ -101,16 +101,10 @@ int main(int argc, char** argv) {
         options.map.cull =
             map_faces == MapFaces::front ? perspective::Cull::back : perspective::Cull::front;
         std::vector<std::string> warnings;
-        std::vector<normal_mapping::MappedModel> models;
-        if (view.models.empty()) models = shadows::default_scene(warnings);
-        for (const std::string& path : view.models)  // as stored: the identity model matrix
-            models.push_back(
-                normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
+        const auto [models, camera] = shadows::load_scene(view, tangents, width, height, warnings);
         rl::print_warnings("08_shadows", warnings);
         const perspective::Box box = shadows::scene_box(models);
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
-        const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
-        rl::print_warnings("08_shadows", {perspective::depth_precision_warning(camera)});
         if (options.light.type == shadows::LightType::spot)
             options.light.position =
                 light_position.empty()

@@ -20,11 +20,16 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
     return models;
 }
 
-perspective::Box scene_box(const std::vector<normal_mapping::MappedModel>& models) {
-    perspective::Box box;
-    for (const normal_mapping::MappedModel& m : models)
-        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
-    return box;
+perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+    int height, std::vector<std::string>& warnings) {
+    perspective::ViewedScene<normal_mapping::MappedModel> scene;
+    if (view.models.empty()) scene.models = default_scene(warnings);
+    for (const std::string& path : view.models)  // as stored: the identity model matrix
+        scene.models.push_back(
+            normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
+    scene.camera = perspective::view_camera(view, scene_box(scene.models), width, height, warnings);
+    return scene;
 }
 
 rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_light) {

@@ -23,8 +23,13 @@ struct ShadowOptions {
 // leaning on the crate, so that objects cast on the floor and on each other.
 std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>& warnings);
 
-// The box around every model.
-perspective::Box scene_box(const std::vector<normal_mapping::MappedModel>& models);
+using normal_mapping::scene_box;  // the box around every model
+
+// The default scene (or the view's models, as stored, with `tangents`) and
+// the camera framing it, as lesson 08's program draws them.
+perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+    int height, std::vector<std::string>& warnings);
 
 // A spot light's default place: on the --light direction from the scene's
 // centre, twice the scene's radius away.

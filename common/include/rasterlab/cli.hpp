@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "rasterlab/direction.hpp"
 #include "rasterlab/named_enum.hpp"
 
 namespace rl {
@@ -55,18 +56,6 @@ inline void add_light_option(CLI::App& app, std::vector<float>& light) {
         ->expected(3)
         ->check(finite_number())
         ->capture_default_str();
-}
-
-// Throws std::invalid_argument naming `option` unless the vector can be
-// normalised in float: not zero, and its squared length neither underflows
-// (1e-30 1e-30 1e-30) nor overflows (1e30 0 0).
-inline void check_direction(const std::string& option, const std::vector<float>& v) {
-    float length2 = 0;
-    for (float c : v) length2 += c * c;
-    if (!std::isnormal(length2))
-        throw std::invalid_argument(option +
-                                    ": needs a direction whose length squared is a normal float "
-                                    "(not zero, not below 1e-19 or above 1e19 in length)");
 }
 
 // -o/--output, --width, --height (1 to 16384).
