@@ -29,8 +29,7 @@ int main(int argc, char** argv) {
         rl::print_warnings("01_lines", warnings);
         // [doc:lesson01-main]
         rl::Image image(width, height, rl::kBackground);
-        const std::size_t edges =
-            lines::draw_wireframe(image, mesh, rl::Rgba{235, 235, 220, 255}, method);
+        const std::size_t edges = lines::draw_wireframe(image, mesh, lines::kWireColour, method);
         rl::save_image(output, image);
         // [/doc:lesson01-main]
         std::printf("%zu edges of %s drawn with %s into %s\n", edges, model.c_str(),

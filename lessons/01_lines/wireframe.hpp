@@ -9,6 +9,9 @@
 
 namespace lines {
 
+// The colour lesson 01's program draws wireframes in: a warm white.
+inline constexpr rl::Rgba kWireColour{235, 235, 220, 255};
+
 // Draws every edge of the mesh once (an edge shared by two triangles is not
 // drawn twice, which matters for the blended Wu lines). Returns the number of
 // edges drawn.

@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
         options.uv_offset.y = options.uv_offset.x;
         options.lighting = !no_light;
         options.rotation = rl::rotation_y(turn[1]) * rl::rotation_x(turn[0]);
-        options.sampler.border = {0.9f, 0.1f, 0.6f, 1.0f};  // loud, so that border texels show
+        options.sampler.border = textures::kLoudBorder;
         std::vector<std::string> warnings;
         const rl::Mesh mesh = rl::load_obj(model, &warnings);
         const rl::Texture diffuse = rl::load_texture(mesh, 0, rl::TextureRole::diffuse, warnings);

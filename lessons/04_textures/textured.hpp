@@ -14,6 +14,9 @@ namespace textures {
 
 // The program's default view: turned 25 degrees about x, then -35 about y.
 inline constexpr float kDefaultTurnX = 25.0f, kDefaultTurnY = -35.0f;
+// The border colour the program samples outside [0, 1] with: loud, so that
+// border texels show.
+inline constexpr rl::vec4 kLoudBorder{0.9f, 0.1f, 0.6f, 1.0f};
 
 struct TexturedOptions {
     SamplerState sampler;

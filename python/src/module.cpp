@@ -1,0 +1,48 @@
+// rasterlab's Python module (rasterlab._core; the package rasterlab re-exports
+// it): every lesson's renderer from Python, pictures as numpy arrays. The
+// API is documented in docs/python.md.
+#include <pybind11/pybind11.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "lessons.hpp"
+#include "rasterlab/file_io.hpp"
+#include "rasterlab/image_io.hpp"
+#include "result.hpp"
+#include "scene_args.hpp"
+
+namespace py = pybind11;
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "rasterlab: a CPU software rasterizer built one stage per lesson (C++ core)";
+    // A file the lessons cannot read or write: OSError, with the message the
+    // programs print (it starts with the file's path). std::invalid_argument
+    // (a refused option) already becomes ValueError.
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const rl::FileError& e) {
+            PyErr_SetString(PyExc_OSError, e.what());
+        }
+    });
+    py_rl::bind_result(m);
+    py_rl::bind_scene_args(m);
+    m.def(
+        "read_image",
+        [](const std::filesystem::path& path) {
+            py_rl::Result r;
+            {
+                py::gil_scoped_release unlocked;
+                r.colour = rl::load_image(path);
+            }
+            return r;
+        },
+        py::arg("path"), "Reads a TGA, PNG or JPG file as the lessons do, as a Result");
+    py_rl::bind_lesson00(m.def_submodule("lesson00", "Lesson 00: the framebuffer and TGA"));
+    py_rl::bind_lesson01(m.def_submodule("lesson01", "Lesson 01: lines"));
+    py_rl::bind_lesson02(m.def_submodule("lesson02", "Lesson 02: triangles"));
+    py_rl::bind_lesson03(m.def_submodule("lesson03", "Lesson 03: the z-buffer"));
+    py_rl::bind_lesson04(m.def_submodule("lesson04", "Lesson 04: textures"));
+    py_rl::bind_lesson05(m.def_submodule("lesson05", "Lesson 05: perspective and clipping"));
+    py_rl::bind_lesson06(m.def_submodule("lesson06", "Lesson 06: shading"));
+    py_rl::bind_lesson07(m.def_submodule("lesson07", "Lesson 07: normal mapping"));
+}

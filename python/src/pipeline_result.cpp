@@ -1,0 +1,22 @@
+#include "pipeline_result.hpp"
+
+namespace py_rl {
+
+void take_frame(Result& r, perspective::ColourTarget& frame,
+                const perspective::PipelineCounts& counts, const perspective::Camera& camera) {
+    r.colour = std::move(frame.colour());
+    if (const rl::FloatImage* depth = frame.depth(); depth && depth->width() == r.colour.width())
+        r.depth = std::move(*depth);
+    r.count("objects_culled", counts.objects_culled);
+    r.count("faces", counts.faces);
+    r.count("back_faces", counts.back_faces);
+    r.count("clipped", counts.clipped);
+    r.count("outside", counts.outside);
+    r.count("drawn", counts.drawn);
+    r.count("refused", counts.refused);
+    r.count("fragments", counts.fragments);
+    r.count("near", static_cast<double>(camera.near));
+    r.count("far", static_cast<double>(camera.far));
+}
+
+}  // namespace py_rl

@@ -1,0 +1,170 @@
+#include "scene_args.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "keywords.hpp"
+#include "rasterlab/texture_files.hpp"
+
+namespace py_rl {
+
+std::string model_path(py::handle model) {
+    if (py::isinstance<Mesh>(model)) return model.cast<const Mesh&>().mesh.source.string();
+    if (py::isinstance<py::str>(model) || py::hasattr(model, "__fspath__"))
+        return model.cast<std::filesystem::path>().string();
+    throw py::type_error("a model is a path (str or os.PathLike) or a rasterlab.Mesh, not " +
+                         std::string(py::str(py::type::of(model).attr("__name__"))));
+}
+
+std::vector<std::string> model_paths(py::handle models) {
+    if (models.is_none()) return {};
+    if (py::isinstance<Mesh>(models) || py::isinstance<py::str>(models) ||
+        py::hasattr(models, "__fspath__"))
+        return {model_path(models)};
+    std::vector<std::string> paths;
+    for (py::handle m : models) {
+        if (paths.size() == perspective::kMaxModels)
+            throw py::value_error("--model: at most " + std::to_string(perspective::kMaxModels) +
+                                  " models, each loaded whole");
+        paths.push_back(model_path(m));
+    }
+    return paths;
+}
+
+perspective::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
+                                      const std::vector<double>& light) {
+    perspective::ViewOptions view;
+    view.models = model_paths(models);
+    view.light = three("--light", light);
+    if (camera) {
+        view.eye = camera->eye;
+        view.target = camera->target;
+        view.up = camera->up;
+        view.camera.fov_y = camera->fov;
+        if (camera->near) view.camera.near = *camera->near, view.near_given = true;
+        if (camera->far) view.camera.far = *camera->far, view.far_given = true;
+    }
+    return view;
+}
+
+std::vector<double> default_light() {
+    const std::vector<float> light = perspective::ViewOptions{}.light;
+    return {light.begin(), light.end()};
+}
+
+void check_size(int width, int height) {
+    in_range("--width", width, 1, 16384);
+    in_range("--height", height, 1, 16384);
+}
+
+namespace {
+
+// A copy of an array of vectors as an N x K float32 array.
+template <class V, std::size_t K>
+py::array_t<float> rows_of(const std::vector<V>& values) {
+    py::array_t<float> out({static_cast<py::ssize_t>(values.size()), static_cast<py::ssize_t>(K)});
+    auto w = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < values.size(); ++i)
+        for (std::size_t k = 0; k < K; ++k)
+            w(static_cast<py::ssize_t>(i), static_cast<py::ssize_t>(k)) = values[i][k];
+    return out;
+}
+
+std::optional<std::vector<float>> point(const char* option,
+                                        const std::optional<std::vector<double>>& p) {
+    if (!p) return std::nullopt;
+    return three(option, *p);
+}
+
+}  // namespace
+
+void bind_scene_args(py::module_& m) {
+    py::class_<Mesh>(m, "Mesh",
+                     "An OBJ file as rasterlab reads it (triangulated), with its material's "
+                     "texture files. Pass it (or its path) to any lesson's render function.")
+        .def_property_readonly("path", [](const Mesh& s) { return s.mesh.source.string(); })
+        .def_property_readonly(
+            "positions", [](const Mesh& s) { return rows_of<rl::vec3, 3>(s.mesh.positions); },
+            "N x 3 float32 vertex positions (a copy)")
+        .def_property_readonly(
+            "uvs", [](const Mesh& s) { return rows_of<rl::vec2, 2>(s.mesh.uvs); },
+            "N x 2 float32 texture coordinates (a copy)")
+        .def_property_readonly(
+            "normals", [](const Mesh& s) { return rows_of<rl::vec3, 3>(s.mesh.normals); },
+            "N x 3 float32 normals as the file gives them (a copy)")
+        .def_property_readonly(
+            "faces",
+            [](const Mesh& s) {
+                py::array_t<std::int32_t> out(
+                    {static_cast<py::ssize_t>(s.mesh.faces.size()), py::ssize_t{3}});
+                auto w = out.mutable_unchecked<2>();
+                for (std::size_t i = 0; i < s.mesh.faces.size(); ++i)
+                    for (int k = 0; k < 3; ++k)
+                        w(static_cast<py::ssize_t>(i), k) =
+                            s.mesh.faces[i].corners[static_cast<std::size_t>(k)].position;
+                return out;
+            },
+            "F x 3 int32 indices into positions, one row per triangle (a copy)")
+        .def_property_readonly(
+            "textures",
+            [](const Mesh& s) {
+                py::dict found;
+                const std::pair<const char*, rl::TextureRole> roles[] = {
+                    {"diffuse", rl::TextureRole::diffuse},
+                    {"normal_tangent", rl::TextureRole::normal_tangent},
+                    {"normal_object", rl::TextureRole::normal_object},
+                    {"specular", rl::TextureRole::specular}};
+                for (const auto& [name, role] : roles)
+                    if (const auto path = rl::find_texture(s.mesh, 0, role))
+                        found[name] = path->string();
+                return found;
+            },
+            "The texture files the lessons would use for the first material, by role")
+        .def_readonly("warnings", &Mesh::warnings)
+        .def("__repr__", [](const Mesh& s) {
+            return "<rasterlab.Mesh " + s.mesh.source.string() + ": " +
+                   std::to_string(s.mesh.faces.size()) + " triangles>";
+        });
+
+    m.def(
+        "load_mesh",
+        [](const std::filesystem::path& path) {
+            Mesh out;
+            {
+                py::gil_scoped_release unlocked;
+                out.mesh = rl::load_obj(path, &out.warnings);
+            }
+            return out;
+        },
+        py::arg("path"),
+        "Reads an OBJ file (and its MTL files) as every lesson does; raises OSError naming the "
+        "file and the problem for a missing, unreadable or malformed one.");
+
+    py::class_<Camera>(m, "Camera",
+                       "Lesson 05's camera options. What is None is framed to fit the scene, "
+                       "as the programs do without --eye, --target, --near or --far.")
+        .def(py::init([](std::optional<std::vector<double>> eye,
+                         std::optional<std::vector<double>> target, std::vector<double> up,
+                         double fov, std::optional<double> near, std::optional<double> far) {
+                 Camera c;
+                 c.eye = point("--eye", eye).value_or(std::vector<float>{});
+                 c.target = point("--target", target).value_or(std::vector<float>{});
+                 c.up = three("--up", up);
+                 c.fov = finite("--fov", fov);
+                 if (near) c.near = finite("--near", *near);
+                 if (far) c.far = finite("--far", *far);
+                 return c;
+             }),
+             py::kw_only(), py::arg("eye") = py::none(), py::arg("target") = py::none(),
+             py::arg("up") = std::vector<double>{0, 1, 0}, py::arg("fov") = 50.0,
+             py::arg("near") = py::none(), py::arg("far") = py::none())
+        .def_readonly("eye", &Camera::eye)
+        .def_readonly("target", &Camera::target)
+        .def_readonly("up", &Camera::up)
+        .def_readonly("fov", &Camera::fov)
+        .def_readonly("near", &Camera::near)
+        .def_readonly("far", &Camera::far);
+}
+
+}  // namespace py_rl

@@ -1,0 +1,86 @@
+"""The arrays: their layout, that they are views of the result (no copy),
+that they outlive it; the GIL released while rendering; memory flat over
+many renders."""
+
+import threading
+
+import numpy as np
+
+import rasterlab
+
+
+def test_image_layout_is_top_row_first():
+    card = rasterlab.lesson00.test_card(width=64, height=48)
+    image = card.image
+    assert image.shape == (48, 64, 3) and image.dtype == np.uint8
+    # The test card's white square sits at pixel (0, 0), the bottom-left one:
+    # in a top-first array that is the last row.
+    assert (image[-1, 0] == 255).all()
+    assert not (image[0, 0] == 255).all()
+
+
+def test_arrays_are_views_without_a_copy():
+    r = rasterlab.lesson03.render(width=40, height=30)
+    assert np.shares_memory(r.image, r.rgba)
+    assert r.image.strides[0] == -40 * 4 and r.image.strides[1:] == (4, 1)
+    assert r.depth.shape == (30, 40) and r.depth.dtype == np.float32
+    assert r.depth.strides == (-40 * 4, 4)
+    assert not r.image.flags.writeable
+
+
+def test_arrays_keep_their_result_alive():
+    image = rasterlab.lesson02.draw(width=32, height=32).image
+    copy = image.copy()
+    for _ in range(20):  # other results take the freed memory, if it was freed
+        rasterlab.lesson02.draw(width=32, height=32, raster="bbox", light=(1, 0, 0))
+    assert np.array_equal(image, copy)
+
+
+def test_depth_is_window_depth():
+    r = rasterlab.lesson05.render(width=80, height=60)
+    assert r.depth.min() >= 0 and r.depth.max() <= 1
+    drawn = r.depth < 1
+    assert 0.05 < drawn.mean() < 0.95
+
+
+def test_counts_and_png():
+    r = rasterlab.lesson07.render(width=64, height=64)
+    assert r.counts["faces"] > 0 and r.counts["fragments"] > 0
+    assert r._repr_png_()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_gil_is_released_while_rendering():
+    ticks = 0
+    worker = threading.Thread(target=lambda: rasterlab.lesson07.render(width=400, height=400))
+    worker.start()
+    while worker.is_alive():
+        ticks += 1
+    worker.join()
+    # With the GIL held for the whole render, this loop could not have run.
+    assert ticks > 1000
+
+
+def resident_kib():
+    with open("/proc/self/status") as status:
+        for line in status:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1])
+    raise RuntimeError("no VmRSS")
+
+
+def test_memory_stays_flat_over_many_renders():
+    def renders(n):
+        for i in range(n):
+            r = rasterlab.lesson05.render(width=64, height=64)
+            _ = r.image, r.depth, r.counts
+            rasterlab.lesson02.draw(width=64, height=64, raster=("edge", "bbox")[i % 2])
+            try:
+                rasterlab.lesson02.draw(raster="none")
+            except ValueError:
+                pass
+
+    renders(30)  # warm up: caches, allocator pools
+    before = resident_kib()
+    renders(300)
+    grown = resident_kib() - before
+    assert grown < 8 * 1024, f"resident memory grew by {grown} KiB over 300 renders"

@@ -1,0 +1,132 @@
+"""Every lesson's render function against its program: the same arguments
+give the same bytes."""
+
+import pathlib
+
+import numpy as np
+import pytest
+
+import rasterlab
+
+OBJ = pathlib.Path(__file__).resolve().parents[2] / "obj"
+
+SMALL = dict(width=160, height=120)
+SIZE = ["--width", 160, "--height", 120]
+
+
+def same(result, program_result):
+    assert result.image.shape == program_result.image.shape
+    assert np.array_equal(result.image, program_result.image)
+
+
+def test_lesson00_test_card(programs):
+    same(rasterlab.lesson00.test_card(), programs.image("00"))
+
+
+@pytest.mark.parametrize("misread", ["byte-order", "origin"])
+def test_lesson00_misread(programs, misread):
+    same(rasterlab.lesson00.test_card(misread=misread, width=64, height=32),
+         programs.image("00", "--misread", misread, "--width", 64, "--height", 32))
+
+
+@pytest.mark.parametrize("method", ["parametric", "dda", "bresenham", "wu"])
+def test_lesson01(programs, method):
+    same(rasterlab.lesson01.draw(method=method, **SMALL),
+         programs.image("01", "--method", method, *SIZE))
+
+
+@pytest.mark.parametrize("raster", ["scanline", "bbox", "edge"])
+def test_lesson02(programs, raster):
+    same(rasterlab.lesson02.draw(raster=raster, **SMALL),
+         programs.image("02", "--raster", raster, *SIZE))
+
+
+@pytest.mark.parametrize("flag", ["test_image", "overdraw", "owners", "no_cull"])
+def test_lesson02_pictures(programs, flag):
+    same(rasterlab.lesson02.draw(raster="bbox", **{flag: True}, **SMALL),
+         programs.image("02", "--raster", "bbox", "--" + flag.replace("_", "-"), *SIZE))
+
+
+def test_lesson02_model_and_light(programs):
+    mesh = rasterlab.load_mesh(OBJ / "rock.obj")
+    same(rasterlab.lesson02.draw(mesh, light=(1, 0, 0.5), **SMALL),
+         programs.image("02", "-m", mesh.path, "--light", 1, 0, 0.5, *SIZE))
+
+
+@pytest.mark.parametrize("hsr", ["painter", "bsp", "zbuffer"])
+@pytest.mark.parametrize("scene", ["models", "sticks", "soup"])
+def test_lesson03(programs, hsr, scene):
+    same(rasterlab.lesson03.render(hsr=hsr, scene=scene, **SMALL),
+         programs.image("03", "--hsr", hsr, "--scene", scene, *SIZE))
+
+
+@pytest.mark.parametrize("fmt", ["float-z", "fixed16", "log"])
+def test_lesson03_zfight(programs, fmt):
+    same(rasterlab.lesson03.zfight(format=fmt, **SMALL),
+         programs.image("03", *SIZE, "zfight", "--format", fmt))
+
+
+@pytest.mark.parametrize("filter_", ["nearest", "bilinear", "trilinear"])
+@pytest.mark.parametrize("wrap", ["repeat", "mirror", "clamp", "border"])
+def test_lesson04(programs, filter_, wrap):
+    same(rasterlab.lesson04.draw(filter=filter_, wrap=wrap, uv_scale=2.5, uv_offset=-0.3,
+                                 **SMALL),
+         programs.image("04", "--filter", filter_, "--wrap", wrap, "--uv-scale", 2.5,
+                        "--uv-offset", -0.3, *SIZE))
+
+
+def test_lesson04_turn_scale_no_light(programs):
+    same(rasterlab.lesson04.draw(turn=(10, 80), scale=0.7, no_light=True, **SMALL),
+         programs.image("04", "--turn", 10, 80, "--scale", 0.7, "--no-light", *SIZE))
+
+
+@pytest.mark.parametrize("clip", ["none", "near", "guard-band", "all"])
+@pytest.mark.parametrize("interpolation", ["affine", "perspective"])
+def test_lesson05(programs, clip, interpolation):
+    camera = rasterlab.Camera(eye=(0.5, 0.4, 1.2), target=(0, 0.3, 0), near=0.05)
+    same(rasterlab.lesson05.render(camera=camera, clip=clip, interpolation=interpolation,
+                                   **SMALL),
+         programs.image("05", "--clip", clip, "--interpolation", interpolation,
+                        "--eye", 0.5, 0.4, 1.2, "--target", 0, 0.3, 0, "--near", 0.05, *SIZE))
+
+
+def test_lesson05_models_lod_filter(programs):
+    globe = str(OBJ / "globe.obj")
+    same(rasterlab.lesson05.render([globe], rasterlab.Camera(fov=30), lod="triangle",
+                                   filter="bilinear", no_light=True, **SMALL),
+         programs.image("05", "-m", globe, "--fov", 30, "--lod", "triangle", "--filter",
+                        "bilinear", "--no-light", *SIZE))
+
+
+@pytest.mark.parametrize("shading", ["flat", "gouraud", "phong", "blinn-phong"])
+def test_lesson06(programs, shading):
+    same(rasterlab.lesson06.render(shading=shading, **SMALL),
+         programs.image("06", "--shading", shading, *SIZE))
+
+
+def test_lesson06_options(programs):
+    same(rasterlab.lesson06.render(weighting="area", shininess=5, naive=True, one_light=True,
+                                   light=(-1, 1, 0.2), **SMALL),
+         programs.image("06", "--weighting", "area", "--shininess", 5, "--naive",
+                        "--one-light", "--light", -1, 1, 0.2, *SIZE))
+
+
+@pytest.mark.parametrize("normal_map", ["tangent", "object", "none"])
+@pytest.mark.parametrize("tangents", ["face", "vertex", "split"])
+def test_lesson07(programs, normal_map, tangents):
+    same(rasterlab.lesson07.render(normal_map=normal_map, tangents=tangents, **SMALL),
+         programs.image("07", "--normal-map", normal_map, "--tangents", tangents, *SIZE))
+
+
+def test_lesson07_options(programs):
+    torus = rasterlab.load_mesh(str(OBJ / "torus.obj"))
+    same(rasterlab.lesson07.render([torus], specular="phong", filter="nearest", naive=True,
+                                   **SMALL),
+         programs.image("07", "-m", torus.path, "--specular", "phong", "--filter", "nearest",
+                        "--naive", *SIZE))
+
+
+def test_lesson07_default_picture(programs):
+    """rasterlab.lesson07.render() with no arguments draws the program's own
+    default picture (800 x 800)."""
+    same(rasterlab.lesson07.render(), programs.image("07"))
