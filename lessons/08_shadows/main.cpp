@@ -11,24 +11,6 @@
 #include "rasterlab/main_guard.hpp"
 #include "scene.hpp"
 
-namespace {
-
-enum class Show { image, shadow_map };
-constexpr std::array<rl::Named<Show>, 2> kShowNames = {
-    {{Show::image, "image"}, {Show::shadow_map, "shadow-map"}}};
-const char* name(Show value) {
-    return rl::name_in(kShowNames, value);
-}
-
-enum class MapFaces { front, back };
-constexpr std::array<rl::Named<MapFaces>, 2> kMapFacesNames = {
-    {{MapFaces::front, "front"}, {MapFaces::back, "back"}}};
-const char* name(MapFaces value) {
-    return rl::name_in(kMapFacesNames, value);
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
     CLI::App app{
         "Lesson 08, shadows: lesson 07's render with shadows from a shadow map, of a directional "
@@ -37,12 +19,10 @@ int main(int argc, char** argv) {
     perspective::ViewOptions view;
     shadows::ShadowOptions options;
     normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
-    Show show = Show::image;
-    MapFaces map_faces = MapFaces::front;
+    shadows::Show show = shadows::Show::image;
+    shadows::MapFaces map_faces = shadows::MapFaces::front;
     std::vector<float> light_position;
-    // A light from the right, in front: the crate and the torus shadow the
-    // globe, and all three the floor, where the camera sees it.
-    view.light = {1.0f, 0.6f, 0.6f};
+    view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
     perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--light-type", options.light.type, shadows::kLightTypes,
@@ -75,9 +55,9 @@ int main(int argc, char** argv) {
                           "Shadow filter");
     rl::add_method_option(app, "--fit", options.fit, shadows::kFits,
                           "The light's frustum around the whole scene or what the camera sees");
-    rl::add_method_option(app, "--map-faces", map_faces, rl::values_of(kMapFacesNames),
+    rl::add_method_option(app, "--map-faces", map_faces, shadows::kMapFaces,
                           "Faces stored in the map: those facing the light, or those facing away");
-    rl::add_method_option(app, "--show", show, rl::values_of(kShowNames),
+    rl::add_method_option(app, "--show", show, shadows::kShows,
                           "Write the image, or the shadow map's depth as a picture");
     rl::add_method_option(app, "--normal-map", options.render.normal_map,
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
@@ -95,21 +75,14 @@ int main(int argc, char** argv) {
 
     return rl::guarded_main("08_shadows", [&] {
         rl::check_image_output(output);
-        options.light.direction = rl::normalize(perspective::light_direction(view));
-        options.render.lighting = shading::default_lighting(options.light.direction);
-        if (one_light) options.render.lighting.lights.resize(1);
-        options.map.cull =
-            map_faces == MapFaces::front ? perspective::Cull::back : perspective::Cull::front;
+        shadows::set_lights(options, view, one_light);
+        options.map.cull = shadows::cull_for(map_faces);
         std::vector<std::string> warnings;
         const auto [models, camera] = shadows::load_scene(view, tangents, width, height, warnings);
         rl::print_warnings("08_shadows", warnings);
         const perspective::Box box = shadows::scene_box(models);
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
-        if (options.light.type == shadows::LightType::spot)
-            options.light.position =
-                light_position.empty()
-                    ? shadows::default_spot_position(box, options.light.direction)
-                    : rl::vec3{light_position[0], light_position[1], light_position[2]};
+        shadows::place_spot(options, box, light_position);
 
         if (options.render.filter == textures::Filter::trilinear)
             normal_mapping::build_mip_levels(models);
@@ -121,8 +94,8 @@ int main(int argc, char** argv) {
         const perspective::PipelineCounts counts =
             shadows::render(models, camera, options, map, frame);
         const auto done = std::chrono::steady_clock::now();
-        rl::save_image(output,
-                       show == Show::image ? frame.colour() : zbuffer::depth_picture(map.depth));
+        rl::save_image(output, show == shadows::Show::image ? frame.colour()
+                                                            : zbuffer::depth_picture(map.depth));
         // [/doc:lesson08-main]
         const std::chrono::duration<double, std::milli> map_ms = mapped - start,
                                                         frame_ms = done - mapped;
@@ -130,9 +103,9 @@ int main(int argc, char** argv) {
             "%zu models: %zu faces, %zu fragments shaded; %s light, %dx%d shadow map (%s fit, %s "
             "faces, %s filter) in %.1f ms, frame in %.1f ms; %s into %s\n",
             models.size(), counts.faces, counts.fragments, shadows::name(options.light.type),
-            map.size(), map.size(), shadows::name(options.fit), name(map_faces),
-            shadows::name(options.lookup.filter), map_ms.count(), frame_ms.count(), name(show),
-            output.c_str());
+            map.size(), map.size(), shadows::name(options.fit), shadows::name(map_faces),
+            shadows::name(options.lookup.filter), map_ms.count(), frame_ms.count(),
+            shadows::name(show), output.c_str());
         return 0;
     });
 }

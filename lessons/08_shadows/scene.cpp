@@ -32,6 +32,19 @@ perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     return scene;
 }
 
+void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bool one_light) {
+    options.light.direction = rl::normalize(perspective::light_direction(view));
+    options.render.lighting = shading::default_lighting(options.light.direction);
+    if (one_light) options.render.lighting.lights.resize(1);
+}
+
+void place_spot(ShadowOptions& options, const perspective::Box& box,
+                const std::vector<float>& position) {
+    if (options.light.type != LightType::spot) return;
+    options.light.position = position.empty() ? default_spot_position(box, options.light.direction)
+                                              : rl::vec3{position[0], position[1], position[2]};
+}
+
 rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_light) {
     return box.centre() + rl::normalize(towards_light) * rl::length(box.max - box.min);
 }

@@ -19,6 +19,32 @@ struct ShadowOptions {
     ShadowLookup lookup;
 };
 
+// What the program writes: the image, or the shadow map's depth as a picture.
+enum class Show { image, shadow_map };
+inline constexpr std::array<rl::Named<Show>, 2> kShowNames = {
+    {{Show::image, "image"}, {Show::shadow_map, "shadow-map"}}};
+inline constexpr std::array<Show, 2> kShows = rl::values_of(kShowNames);
+inline const char* name(Show value) {
+    return rl::name_in(kShowNames, value);
+}
+
+// The faces the map stores: those facing the light (their back faces
+// culled), or those facing away.
+enum class MapFaces { front, back };
+inline constexpr std::array<rl::Named<MapFaces>, 2> kMapFacesNames = {
+    {{MapFaces::front, "front"}, {MapFaces::back, "back"}}};
+inline constexpr std::array<MapFaces, 2> kMapFaces = rl::values_of(kMapFacesNames);
+inline const char* name(MapFaces value) {
+    return rl::name_in(kMapFacesNames, value);
+}
+inline perspective::Cull cull_for(MapFaces faces) {
+    return faces == MapFaces::front ? perspective::Cull::back : perspective::Cull::front;
+}
+
+// The program's --light: from the right, in front, so that the crate and the
+// torus shadow the globe, and all three the floor, where the camera sees it.
+inline constexpr rl::vec3 kSceneLight{1.0f, 0.6f, 0.6f};
+
 // The default scene: lesson 07's floor, globe and crate, and the torus
 // leaning on the crate, so that objects cast on the floor and on each other.
 std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>& warnings);
@@ -34,6 +60,16 @@ perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
 // A spot light's default place: on the --light direction from the scene's
 // centre, twice the scene's radius away.
 rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_light);
+
+// The lights the view asks for: the key light's direction (--light, made
+// unit), lesson 07's lighting from it (with its dim fill light unless
+// `one_light`). Throws std::invalid_argument naming --light for 0 0 0.
+void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bool one_light);
+
+// A spot light's place: `position` (three numbers) if given, else
+// default_spot_position(); nothing for a directional light.
+void place_spot(ShadowOptions& options, const perspective::Box& box,
+                const std::vector<float>& position);
 
 // The first pass. `aspect`: the camera's width / height, for Fit::view.
 ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,

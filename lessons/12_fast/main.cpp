@@ -57,17 +57,8 @@ int main(int argc, char** argv) {
             normal_mapping::load_scene(cli, width, height, "12_fast");
         options.render = cli.options;  // with the lighting and output load_scene set
         fast::Renderer renderer(scene.models, width, height, options);
-        std::vector<double> times;
-        fast::FrameCounts counts;
-        for (int i = 0; i < frames; ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            counts = renderer.render(fast::orbit(scene.camera, i, frames));
-            times.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count());
-        }
+        const auto [ms, counts] = fast::render_orbit(renderer, scene.camera, frames);
         rl::save_image(output, renderer.frame());
-        const double ms = fast::median_after_first(times);
         std::printf(
             "%d frames of %dx%d on %d threads (%s): median %.2f ms per frame (first excluded); "
             "%zu triangles, %.1f M triangles/s, %.1f M pixels shaded/s; into %s\n",

@@ -1,5 +1,6 @@
 #include "renderer.hpp"
 
+#include "orbit.hpp"
 #include "workers.hpp"
 
 #include <algorithm>
@@ -354,6 +355,20 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     times_.tiles = milliseconds_since(start);
     for (const TileCounts& c : s.tile_counts) counts.tiles += c;
     return counts;
+}
+
+OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames) {
+    std::vector<double> times;
+    OrbitRun run;
+    for (int i = 0; i < frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        run.counts = renderer.render(orbit(camera, i, frames));
+        times.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+    }
+    run.median_ms = median_after_first(std::move(times));
+    return run;
 }
 
 }  // namespace fast

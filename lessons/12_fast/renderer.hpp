@@ -82,4 +82,13 @@ class Renderer {
     StageTimes times_;
 };
 
+// `frames` frames along fast::orbit(camera, ...), each timed: the median time
+// (the first frame left out) and the last frame's counts. The last frame,
+// renderer.frame(), is the view of `camera` itself.
+struct OrbitRun {
+    double median_ms = 0;
+    FrameCounts counts;
+};
+OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames);
+
 }  // namespace fast

@@ -22,6 +22,8 @@ from ._core import (  # noqa: F401  (the package's API)
     lesson05,
     lesson06,
     lesson07,
+    lesson08,
+    lesson12,
 )
 from ._labs import run_lab as _run_lab
 
@@ -38,5 +40,5 @@ def _add_lab(module, lesson):
 
 for _lesson, _module in [("01", lesson01), ("02", lesson02), ("03", lesson03),
                          ("04", lesson04), ("05", lesson05), ("06", lesson06),
-                         ("07", lesson07)]:
+                         ("07", lesson07), ("08", lesson08), ("12", lesson12)]:
     _add_lab(_module, _lesson)

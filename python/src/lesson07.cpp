@@ -5,10 +5,27 @@
 #include "07_normal_mapping/scene.hpp"
 #include "keywords.hpp"
 #include "lessons.hpp"
+#include "mapped_keywords.hpp"
 #include "pipeline_result.hpp"
 #include "scene_args.hpp"
 
 namespace py_rl {
+
+normal_mapping::MappedView mapped_view(py::handle models, const std::optional<Camera>& camera,
+                                       const std::vector<double>& light,
+                                       const std::string& normal_map, const std::string& tangents,
+                                       const std::string& specular, const std::string& filter,
+                                       bool naive, bool one_light) {
+    normal_mapping::MappedView request;
+    request.view = view_options(models, camera, light);
+    request.options.normal_map = choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
+    request.tangents = choice("--tangents", tangents, normal_mapping::kTangentMethods);
+    request.options.specular = choice("--specular", specular, shading::kSpeculars);
+    request.options.filter = choice("--filter", filter, textures::kFilters);
+    request.naive = naive;
+    request.one_light = one_light;
+    return request;
+}
 
 void bind_lesson07(py::module_ m) {
     const normal_mapping::MappedView defaults;
@@ -18,15 +35,8 @@ void bind_lesson07(py::module_ m) {
            int width, int height, const std::string& normal_map, const std::string& tangents,
            const std::string& specular, const std::string& filter, bool naive, bool one_light) {
             check_size(width, height);
-            normal_mapping::MappedView request;
-            request.view = view_options(models, camera, light);
-            request.options.normal_map =
-                choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
-            request.tangents = choice("--tangents", tangents, normal_mapping::kTangentMethods);
-            request.options.specular = choice("--specular", specular, shading::kSpeculars);
-            request.options.filter = choice("--filter", filter, textures::kFilters);
-            request.naive = naive;
-            request.one_light = one_light;
+            normal_mapping::MappedView request = mapped_view(
+                models, camera, light, normal_map, tangents, specular, filter, naive, one_light);
             Result r;
             py::gil_scoped_release unlocked;
             const auto scene = normal_mapping::load_scene(request, width, height, r.warnings);

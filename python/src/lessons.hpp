@@ -17,5 +17,7 @@ void bind_lesson04(py::module_ m);
 void bind_lesson05(py::module_ m);
 void bind_lesson06(py::module_ m);
 void bind_lesson07(py::module_ m);
+void bind_lesson08(py::module_ m);
+void bind_lesson12(py::module_ m);
 
 }  // namespace py_rl

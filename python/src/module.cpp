@@ -45,4 +45,6 @@ PYBIND11_MODULE(_core, m) {
     py_rl::bind_lesson05(m.def_submodule("lesson05", "Lesson 05: perspective and clipping"));
     py_rl::bind_lesson06(m.def_submodule("lesson06", "Lesson 06: shading"));
     py_rl::bind_lesson07(m.def_submodule("lesson07", "Lesson 07: normal mapping"));
+    py_rl::bind_lesson08(m.def_submodule("lesson08", "Lesson 08: shadows"));
+    py_rl::bind_lesson12(m.def_submodule("lesson12", "Lesson 12: the fast path"));
 }

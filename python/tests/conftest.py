@@ -20,6 +20,8 @@ PROGRAMS = {
     "05": "05_perspective",
     "06": "06_shading",
     "07": "07_normal_mapping",
+    "08": "08_shadows",
+    "12": "12_fast",
 }
 
 

@@ -130,3 +130,42 @@ def test_lesson07_default_picture(programs):
     """rasterlab.lesson07.render() with no arguments draws the program's own
     default picture (800 x 800)."""
     same(rasterlab.lesson07.render(), programs.image("07"))
+
+
+@pytest.mark.parametrize("filter_", ["hard", "pcf2", "poisson"])
+@pytest.mark.parametrize("light_type", ["directional", "spot"])
+def test_lesson08(programs, filter_, light_type):
+    same(rasterlab.lesson08.render(filter=filter_, light_type=light_type, shadow_map_size=256,
+                                   **SMALL),
+         programs.image("08", "--filter", filter_, "--light-type", light_type,
+                        "--shadow-map-size", 256, *SIZE))
+
+
+def test_lesson08_options(programs):
+    same(rasterlab.lesson08.render(light_type="spot", light_position=(2, 3, 2), cone=40,
+                                   bias=0.001, slope_bias=2, normal_offset=0, fit="scene",
+                                   map_faces="back", texture_filter="bilinear", one_light=True,
+                                   shadow_map_size=300, **SMALL),
+         programs.image("08", "--light-type", "spot", "--light-position", 2, 3, 2, "--cone",
+                        40, "--bias", 0.001, "--slope-bias", 2, "--normal-offset", 0, "--fit",
+                        "scene", "--map-faces", "back", "--texture-filter", "bilinear",
+                        "--one-light", "--shadow-map-size", 300, *SIZE))
+
+
+def test_lesson08_shadow_map_picture(programs):
+    same(rasterlab.lesson08.render(show="shadow-map", shadow_map_size=128, **SMALL),
+         programs.image("08", "--show", "shadow-map", "--shadow-map-size", 128, *SIZE))
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_lesson12(programs, threads):
+    same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),
+         programs.image("12", "--frames", 3, "--threads", threads, "--tile-size", 32,
+                        "--no-peer", *SIZE))
+
+
+def test_lesson12_options(programs):
+    same(rasterlab.lesson12.render(normal_map="object", filter="bilinear", naive=True,
+                                   frames=1, **SMALL),
+         programs.image("12", "--normal-map", "object", "--filter", "bilinear", "--naive",
+                        "--frames", 1, "--no-peer", *SIZE))
