@@ -1,5 +1,6 @@
 #include "hsr_scenes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -76,6 +77,16 @@ double wrong_share(const Frame& frame, const Frame& reference) {
         wrong += mine[i] != truth[i];
     }
     return covered ? static_cast<double>(wrong) / static_cast<double>(covered) : 0.0;
+}
+
+std::vector<SceneTriangle> program_scene(const std::string& name,
+                                         const std::vector<Placement>& placements, int width,
+                                         int height, std::vector<std::string>& warnings,
+                                         std::size_t& culled) {
+    const int size = std::min(width, height);
+    if (name == "sticks") return cyclic_sticks(size);
+    if (name == "soup") return random_soup(60, size, 9);
+    return build_scene(placements, width, height, &warnings, &culled);
 }
 
 }  // namespace zbuffer

@@ -4,8 +4,11 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "hidden_surfaces.hpp"
+#include "scene.hpp"
 
 namespace zbuffer {
 
@@ -20,6 +23,15 @@ std::vector<SceneTriangle> random_soup(int count, int size, std::uint64_t seed);
 
 // Two coplanar triangles covering the same pixels, drawn in the given order.
 std::vector<SceneTriangle> coplanar_pair(int size);
+
+// The program's --scene choices, and the triangles of each for a width x
+// height image: "models" (the placements' models, culled faces counted in
+// `culled`), "sticks" (cyclic_sticks) or "soup" (60 triangles of random_soup).
+inline const std::vector<std::string> kProgramScenes = {"models", "sticks", "soup"};
+std::vector<SceneTriangle> program_scene(const std::string& name,
+                                         const std::vector<Placement>& placements, int width,
+                                         int height, std::vector<std::string>& warnings,
+                                         std::size_t& culled);
 
 // The share (0..1) of pixels covered in `reference` whose winning face differs in `frame`.
 double wrong_share(const Frame& frame, const Frame& reference);

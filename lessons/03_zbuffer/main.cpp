@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
            "--scene", scene_name,
            "models (the rock pierced by the torus), sticks (three sticks in a cycle) or soup "
            "(60 triangles piercing each other)")
-        ->check(CLI::IsMember({"models", "sticks", "soup"}))
+        ->check(CLI::IsMember(zbuffer::kProgramScenes))
         ->capture_default_str();
     auto* zfight = app.add_subcommand(
         "zfight",
@@ -79,15 +79,9 @@ int main(int argc, char** argv) {
         std::vector<zbuffer::Placement> placements = zbuffer::default_placements();
         if (model_given) placements = {{model}};
         std::vector<std::string> warnings;
-        std::vector<zbuffer::SceneTriangle> scene;
         std::size_t culled = 0;
-        const int size = std::min(width, height);
-        if (scene_name == "sticks")
-            scene = zbuffer::cyclic_sticks(size);
-        else if (scene_name == "soup")
-            scene = zbuffer::random_soup(60, size, 9);
-        else
-            scene = zbuffer::build_scene(placements, width, height, &warnings, &culled);
+        const std::vector<zbuffer::SceneTriangle> scene =
+            zbuffer::program_scene(scene_name, placements, width, height, warnings, culled);
         rl::print_warnings("03_zbuffer", warnings);
         // [doc:lesson03-main]
         zbuffer::Frame frame(width, height);

@@ -22,20 +22,14 @@ void bind_lesson03(py::module_ m) {
            const std::string& scene_name) {
             check_size(width, height);
             const auto method = choice("--hsr", hsr, zbuffer::kHsrMethods);
-            const std::string which = choice("--scene", scene_name, {"models", "sticks", "soup"});
+            const std::string which = choice("--scene", scene_name, zbuffer::kProgramScenes);
             std::vector<zbuffer::Placement> placements = zbuffer::default_placements();
             if (!model.is_none()) placements = {{model_path(model)}};
             Result r;
             py::gil_scoped_release unlocked;
-            std::vector<zbuffer::SceneTriangle> scene;
             std::size_t culled = 0;
-            const int size = std::min(width, height);
-            if (which == "sticks")
-                scene = zbuffer::cyclic_sticks(size);
-            else if (which == "soup")
-                scene = zbuffer::random_soup(60, size, 9);
-            else
-                scene = zbuffer::build_scene(placements, width, height, &r.warnings, &culled);
+            const std::vector<zbuffer::SceneTriangle> scene =
+                zbuffer::program_scene(which, placements, width, height, r.warnings, culled);
             zbuffer::Frame frame(width, height);
             zbuffer::render(method, scene, frame);
             r.count("drawn", scene.size() - frame.refused);
