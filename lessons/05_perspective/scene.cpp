@@ -45,7 +45,8 @@ Camera view_camera(const ViewOptions& view, const Box& box, int width, int heigh
                    std::vector<std::string>& warnings) {
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const Camera camera = resolve_camera(view, box, aspect);
-    warnings.push_back(depth_precision_warning(camera));
+    if (std::string warning = depth_precision_warning(camera); !warning.empty())
+        warnings.push_back(std::move(warning));
     return camera;
 }
 

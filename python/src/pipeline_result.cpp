@@ -15,6 +15,9 @@ void take_frame(Result& r, perspective::ColourTarget& frame,
     r.count("drawn", counts.drawn);
     r.count("refused", counts.refused);
     r.count("fragments", counts.fragments);
+    const auto point = [](rl::vec3 p) -> std::vector<double> { return {p.x, p.y, p.z}; };
+    r.count("eye", point(camera.eye));  // the camera as framed: what the program prints
+    r.count("target", point(camera.target));
     r.count("near", static_cast<double>(camera.near));
     r.count("far", static_cast<double>(camera.far));
 }

@@ -25,7 +25,7 @@ namespace py = pybind11;
 struct Result {
     rl::Image colour;
     std::optional<rl::FloatImage> depth;  // window depth in [0, 1], 1 where nothing was drawn
-    using Value = std::variant<long long, double, std::string>;
+    using Value = std::variant<long long, double, std::string, std::vector<double>>;
     std::vector<std::pair<std::string, Value>> counts;  // in the order the program prints them
     std::vector<std::string> warnings;
 
@@ -37,6 +37,9 @@ struct Result {
     }
     void count(const std::string& name, double value) { counts.emplace_back(name, value); }
     void count(const std::string& name, const std::string& value) {
+        counts.emplace_back(name, value);
+    }
+    void count(const std::string& name, const std::vector<double>& value) {
         counts.emplace_back(name, value);
     }
 };

@@ -22,6 +22,8 @@ std::vector<std::string> model_paths(py::handle models) {
     if (py::isinstance<Mesh>(models) || py::isinstance<py::str>(models) ||
         py::hasattr(models, "__fspath__"))
         return {model_path(models)};
+    if (py::isinstance<py::bytes>(models) || !py::isinstance<py::iterable>(models))
+        return {model_path(models)};  // (which says what a model is)
     std::vector<std::string> paths;
     for (py::handle m : models) {
         if (paths.size() == perspective::kMaxModels)
@@ -29,6 +31,9 @@ std::vector<std::string> model_paths(py::handle models) {
                                   " models, each loaded whole");
         paths.push_back(model_path(m));
     }
+    // The programs cannot be asked for no model: None is the default scene.
+    if (paths.empty())
+        throw py::value_error("models: an empty list (None draws the lesson's default scene)");
     return paths;
 }
 
@@ -75,6 +80,12 @@ std::optional<std::vector<float>> point(const char* option,
                                         const std::optional<std::vector<double>>& p) {
     if (!p) return std::nullopt;
     return three(option, *p);
+}
+
+// None for a point left to the framing (an empty vector), else the point.
+py::object optional_point(const std::vector<float>& p) {
+    if (p.empty()) return py::none();
+    return py::cast(p);
 }
 
 }  // namespace
@@ -133,7 +144,8 @@ void bind_scene_args(py::module_& m) {
             Mesh out;
             {
                 py::gil_scoped_release unlocked;
-                out.mesh = rl::load_obj(path, &out.warnings);
+                // Kept whole, so that the Mesh still finds its file after a chdir.
+                out.mesh = rl::load_obj(std::filesystem::absolute(path), &out.warnings);
             }
             return out;
         },
@@ -159,12 +171,26 @@ void bind_scene_args(py::module_& m) {
              py::kw_only(), py::arg("eye") = py::none(), py::arg("target") = py::none(),
              py::arg("up") = std::vector<double>{0, 1, 0}, py::arg("fov") = 50.0,
              py::arg("near") = py::none(), py::arg("far") = py::none())
-        .def_readonly("eye", &Camera::eye)
-        .def_readonly("target", &Camera::target)
+        .def_property_readonly("eye", [](const Camera& c) { return optional_point(c.eye); })
+        .def_property_readonly("target", [](const Camera& c) { return optional_point(c.target); })
         .def_readonly("up", &Camera::up)
         .def_readonly("fov", &Camera::fov)
         .def_readonly("near", &Camera::near)
-        .def_readonly("far", &Camera::far);
+        .def_readonly("far", &Camera::far)
+        .def("__repr__", [](const Camera& c) {
+            const auto text = [](const std::vector<float>& p) -> std::string {
+                if (p.empty()) return "None";
+                return "(" + py::str(py::float_(p[0])).cast<std::string>() + ", " +
+                       py::str(py::float_(p[1])).cast<std::string>() + ", " +
+                       py::str(py::float_(p[2])).cast<std::string>() + ")";
+            };
+            const auto number = [](const std::optional<float>& v) -> std::string {
+                return v ? py::str(py::float_(*v)).cast<std::string>() : "None";
+            };
+            return "rasterlab.Camera(eye=" + text(c.eye) + ", target=" + text(c.target) +
+                   ", up=" + text(c.up) + ", fov=" + number(c.fov) + ", near=" + number(c.near) +
+                   ", far=" + number(c.far) + ")";
+        });
 }
 
 }  // namespace py_rl

@@ -103,3 +103,24 @@ def test_memory_stays_flat_over_many_renders():
     renders(300)
     grown = resident_kib() - before
     assert grown < 2 * 1024, f"resident memory grew by {grown} KiB over 300 renders"
+
+
+def test_a_mesh_still_finds_its_file_after_a_chdir(tmp_path, monkeypatch):
+    monkeypatch.chdir(OBJ.parent)
+    crate = rasterlab.load_mesh("obj/crate.obj")
+    monkeypatch.chdir(tmp_path)
+    assert rasterlab.lesson05.render([crate], width=16, height=16).counts["faces"] > 0
+
+
+def test_warnings_hold_only_what_the_program_prints(tmp_path):
+    assert rasterlab.lesson07.render(width=16, height=16).warnings == []
+    bare = tmp_path / "bare.obj"
+    bare.write_text((OBJ / "crate.obj").read_text().replace("mtllib", "# mtllib"))
+    warned = rasterlab.lesson05.render([bare], width=16, height=16).warnings
+    assert warned and all(warned) and "texture" in " ".join(warned)
+
+
+def test_counts_hold_the_framed_camera():
+    counts = rasterlab.lesson06.render(width=16, height=16).counts
+    assert len(counts["eye"]) == 3 and len(counts["target"]) == 3
+    assert 0 < counts["near"] < counts["far"]

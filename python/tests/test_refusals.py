@@ -102,3 +102,14 @@ def test_saving_over_an_input_is_refused(tmp_path):
     rasterlab.read_image(texture)
     with pytest.raises(OSError, match="copy.tga"):
         rasterlab.lesson01.draw(width=8, height=8).save(texture)
+
+
+def test_no_models_is_not_the_default_scene():
+    with pytest.raises(ValueError, match="an empty list"):
+        rasterlab.lesson05.render(models=[])
+
+
+@pytest.mark.parametrize("models", [b"obj/crate.obj", 3])
+def test_what_a_model_is(models):
+    with pytest.raises(TypeError, match="a model is a path"):
+        rasterlab.lesson07.render(models)
