@@ -16,7 +16,7 @@ def test_lesson01_lab_rows():
     assert timed and all(row["ns_per_line"] > 0 for row in timed)
 
 
-@pytest.mark.parametrize("lesson", ["02", "03", "04", "05", "06", "07"])
+@pytest.mark.parametrize("lesson", ["02", "03", "04", "05", "06", "07", "08", "12"])
 def test_every_lab_returns_tables(lesson):
     tables = getattr(rasterlab, f"lesson{lesson}").lab(quick=True)
     assert tables, f"lesson {lesson}'s lab wrote no table"
