@@ -43,12 +43,13 @@ perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width,
     if (request.one_light) options.lighting.lights.resize(1);
     options.output = request.naive ? shading::Output::naive : shading::Output::srgb;
     perspective::ViewedScene<MappedModel> scene;
+    const std::optional<NormalMap> only =
+        request.every_normal_map ? std::nullopt : std::optional(options.normal_map);
     if (request.view.models.empty())
-        scene.models =
-            default_scene(request.tangents, warnings, options.output, options.normal_map);
+        scene.models = default_scene(request.tangents, warnings, options.output, only);
     for (const std::string& path : request.view.models)  // as stored: the identity model matrix
         scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), request.tangents,
-                                                 warnings, options.output, options.normal_map));
+                                                 warnings, options.output, only));
     scene.camera =
         perspective::view_camera(request.view, scene_box(scene.models), width, height, warnings);
     return scene;

@@ -55,6 +55,7 @@ struct MappedView {
     RenderOptions options;
     TangentMethod tangents = TangentMethod::split;
     bool naive = false, one_light = false;
+    bool every_normal_map = false;  // load both maps, not just options.normal_map's (to switch)
 };
 
 // Sets the lighting and the output the view asks for in `request.options`,

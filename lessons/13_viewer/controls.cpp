@@ -1,0 +1,152 @@
+#include "controls.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "05_perspective/view_options.hpp"
+
+namespace viewer {
+
+namespace {
+
+struct KeyName {
+    char name;
+    Key key;
+    const char* what;
+};
+constexpr KeyName kKeys[] = {
+    {'<', Key::turn_left, "left arrow: turn the camera left about the target"},
+    {'>', Key::turn_right, "right arrow: turn the camera right about the target"},
+    {'^', Key::move_closer, "up arrow: move towards the target"},
+    {'v', Key::move_away, "down arrow: move away from the target"},
+    {'p', Key::next_path, "P: the renderer, lesson 12's fast path or lesson 07's"},
+    {'s', Key::shadows, "S: shadows on or off (lesson 08's renderer)"},
+    {'m', Key::specular, "M: the highlight, Blinn-Phong or Phong"},
+    {'f', Key::filter, "F: the texture filter, trilinear, nearest, bilinear"},
+    {'n', Key::normal_map, "N: the normal map, tangent, object or none"},
+    {'w', Key::wireframe, "W: the wireframe (lesson 01's lines) over the picture"},
+    {'+', Key::finer, "+: a finer framebuffer (up to the window's size)"},
+    {'-', Key::coarser, "-: a coarser framebuffer (1/2, then 1/4 of the window)"},
+    {'r', Key::reset, "R: the first view and settings again"},
+};
+
+constexpr float kTurnDegrees = 5, kMoveFactor = 0.9f, kDegreesPerPixel = 0.4f;
+constexpr float kMostPitch = 85;  // short of the poles, where up and the view align
+
+template <class E, std::size_t N>
+E next(E value, const std::array<E, N>& order) {
+    const auto at = std::find(order.begin(), order.end(), value);
+    return at == order.end() || at + 1 == order.end() ? order.front() : *(at + 1);
+}
+
+}  // namespace
+
+std::optional<Key> key_named(char c) {
+    for (const KeyName& k : kKeys)
+        if (k.name == c) return k.key;
+    return std::nullopt;
+}
+
+std::string key_help() {
+    std::string text = "Keys (and, in a --keys script, the character in brackets):\n";
+    for (const KeyName& k : kKeys) text += std::string("  [") + k.name + "] " + k.what + "\n";
+    text += "  mouse drag: orbit; wheel: zoom; Esc or Q: quit\n";
+    return text;
+}
+
+void apply(Key key, Settings& s, Orbit& orbit) {
+    using normal_mapping::NormalMap;
+    using textures::Filter;
+    switch (key) {
+        case Key::turn_left:
+            orbit.yaw -= kTurnDegrees;
+            break;
+        case Key::turn_right:
+            orbit.yaw += kTurnDegrees;
+            break;
+        case Key::move_closer:
+            orbit.distance *= kMoveFactor;
+            break;
+        case Key::move_away:
+            orbit.distance /= kMoveFactor;
+            break;
+        case Key::next_path:
+            s.path = s.path == Path::fast ? Path::lesson07 : Path::fast;
+            break;
+        case Key::shadows:
+            s.path = s.path == Path::shadows ? Path::fast : Path::shadows;
+            break;
+        case Key::specular:
+            s.specular = next(s.specular, shading::kSpeculars);
+            break;
+        case Key::filter:
+            s.filter =
+                next(s.filter, std::array{Filter::trilinear, Filter::nearest, Filter::bilinear});
+            break;
+        case Key::normal_map:
+            s.normal_map = next(s.normal_map,
+                                std::array{NormalMap::tangent, NormalMap::object, NormalMap::none});
+            break;
+        case Key::wireframe:
+            s.wireframe = !s.wireframe;
+            break;
+        case Key::finer:
+            s.scale = std::max(1, s.scale / 2);
+            break;
+        case Key::coarser:
+            s.scale = std::min(4, s.scale * 2);
+            break;
+        case Key::reset:
+            s = Settings{};
+            break;
+    }
+}
+
+void drag(Orbit& orbit, int dx, int dy) {
+    orbit.yaw -= kDegreesPerPixel * static_cast<float>(dx);
+    orbit.pitch = std::clamp(orbit.pitch + kDegreesPerPixel * static_cast<float>(dy), -kMostPitch,
+                             kMostPitch);
+}
+
+void zoom(Orbit& orbit, int steps) {
+    orbit.distance *= std::pow(kMoveFactor, static_cast<float>(steps));
+}
+
+Orbit orbit_of(const perspective::Camera& camera) {
+    const rl::vec3 offset = camera.eye - camera.target;
+    Orbit orbit;
+    orbit.distance = rl::length(offset);
+    if (!(orbit.distance > 0)) return orbit;
+    constexpr float degrees = 180 / std::numbers::pi_v<float>;
+    orbit.pitch =
+        std::clamp(std::asin(std::clamp(offset.y / orbit.distance, -1.0f, 1.0f)) * degrees,
+                   -kMostPitch, kMostPitch);
+    orbit.yaw = std::atan2(offset.x, offset.z) * degrees;
+    return orbit;
+}
+
+perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
+                              const perspective::Box& box, float aspect) {
+    constexpr float radians = std::numbers::pi_v<float> / 180;
+    const float yaw = orbit.yaw * radians, pitch = orbit.pitch * radians;
+    const rl::vec3 offset{std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                          std::cos(pitch) * std::cos(yaw)};
+    const rl::vec3 eye = start.target + offset * orbit.distance;
+    perspective::ViewOptions view;
+    view.eye = {eye.x, eye.y, eye.z};
+    view.target = {start.target.x, start.target.y, start.target.z};
+    view.up = {0, 1, 0};
+    view.camera.fov_y = start.fov_y;
+    return perspective::resolve_camera(view, box, aspect);  // near and far fitted to the box
+}
+
+std::string describe(const Settings& s) {
+    std::string text = std::string("path ") + name(s.path) + ", " + shading::name(s.specular) +
+                       ", " + textures::name(s.filter) + " filter, " +
+                       normal_mapping::name(s.normal_map) + " normal map, wireframe " +
+                       (s.wireframe ? "on" : "off") + ", scale 1/" + std::to_string(s.scale);
+    return text;
+}
+
+}  // namespace viewer

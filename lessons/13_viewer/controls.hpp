@@ -1,0 +1,91 @@
+// The viewer's controls as plain data: what is on screen (the renderer's
+// path and the shading options), where the camera is (an orbit about the
+// target), and how each key changes them. No window here, so the tests can
+// drive it without one; main.cpp maps SDL's keys and mouse onto it.
+//
+//   viewer::Settings settings;
+//   viewer::Orbit orbit = viewer::orbit_of(camera);
+//   viewer::apply(viewer::Key::next_path, settings, orbit);   // fast -> lesson 07
+//   const perspective::Camera seen = viewer::camera_of(orbit, camera, box, aspect);
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+
+#include "05_perspective/camera.hpp"
+#include "06_shading/lighting.hpp"
+#include "07_normal_mapping/normal_mapped.hpp"
+#include "rasterlab/named_enum.hpp"
+
+namespace viewer {
+
+// Which renderer draws the frame: lesson 12's fast path, lesson 07's clear
+// one, or lesson 08's (lesson 07's with shadows: the shadows key).
+enum class Path { fast, lesson07, shadows };
+inline constexpr std::array<rl::Named<Path>, 3> kPathNames = {
+    {{Path::fast, "fast"}, {Path::lesson07, "lesson07"}, {Path::shadows, "shadows"}}};
+inline constexpr std::array<Path, 3> kPaths = rl::values_of(kPathNames);
+inline const char* name(Path value) {
+    return rl::name_in(kPathNames, value);
+}
+
+struct Settings {
+    Path path = Path::fast;
+    shading::Specular specular = shading::Specular::blinn_phong;
+    textures::Filter filter = textures::Filter::trilinear;
+    normal_mapping::NormalMap normal_map = normal_mapping::NormalMap::tangent;
+    bool wireframe = false;
+    int scale = 1;  // the framebuffer is the window's size divided by this (1, 2 or 4)
+    friend bool operator==(const Settings&, const Settings&) = default;
+};
+
+// The camera as an orbit: the eye at `distance` from the target, turned
+// `yaw` degrees about the up axis and `pitch` degrees above the horizon.
+struct Orbit {
+    float yaw = 0, pitch = 0, distance = 1;
+};
+
+enum class Key {
+    turn_left,
+    turn_right,  // arrows: turn the camera about the target
+    move_closer,
+    move_away,   // arrows: move towards or away from the target
+    next_path,   // P: fast -> lesson 07 -> fast
+    shadows,     // S: shadows on (lesson 08's path) or off
+    specular,    // M: Blinn-Phong <-> Phong
+    filter,      // F: trilinear -> nearest -> bilinear -> trilinear
+    normal_map,  // N: tangent -> object -> none -> tangent
+    wireframe,   // W: lesson 01's lines over the picture
+    finer,
+    coarser,  // + and -: the framebuffer's scale, 1, 1/2, 1/4 of the window
+    reset,    // R: the first view and settings again
+};
+
+// The key named by one character of the --keys script and of --help's list
+// ('<' '>' '^' 'v' for the arrows), or none.
+std::optional<Key> key_named(char c);
+
+// The lines --help prints: every key and what it does.
+std::string key_help();
+
+// Changes the settings or the orbit as `key` says.
+void apply(Key key, Settings& settings, Orbit& orbit);
+
+// Drags and wheel steps: degrees per pixel dragged, and the distance's
+// factor per wheel step.
+void drag(Orbit& orbit, int dx, int dy);
+void zoom(Orbit& orbit, int steps);
+
+// The orbit of a camera about its target (its eye, seen from the target).
+Orbit orbit_of(const perspective::Camera& camera);
+
+// The camera of an orbit: `start`'s target, up and field of view, the eye
+// on the orbit, near and far fitted to `box` as the programs frame them.
+perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
+                              const perspective::Box& box, float aspect);
+
+// One line of the current settings, for the title bar and the tests.
+std::string describe(const Settings& settings);
+
+}  // namespace viewer

@@ -1,0 +1,74 @@
+#include "frame_renderer.hpp"
+
+#include "08_shadows/scene.hpp"
+#include "wire_overlay.hpp"
+
+namespace viewer {
+
+namespace {
+
+// The wireframe's colour: a warm white that reads over the lit scene.
+constexpr rl::Rgba kWire{255, 236, 160, 255};
+
+}  // namespace
+
+FrameRenderer::FrameRenderer(const std::vector<normal_mapping::MappedModel>& models,
+                             const normal_mapping::MappedView& request)
+    : models_(models), request_(request) {
+    for (const normal_mapping::MappedModel& m : models) faces_ += m.lit.model.mesh.faces.size();
+}
+
+normal_mapping::RenderOptions FrameRenderer::options_for(const Settings& s) const {
+    normal_mapping::RenderOptions options = request_.options;
+    options.specular = s.specular;
+    options.filter = s.filter;
+    options.normal_map = s.normal_map;
+    return options;
+}
+
+const rl::Image& FrameRenderer::render(const Settings& settings, const perspective::Camera& camera,
+                                       int width, int height) {
+    stats_ = {faces_, 0};
+    const normal_mapping::RenderOptions options = options_for(settings);
+    if (settings.path == Path::fast) {
+        Settings shading = settings;  // what a rebuild depends on: not the path, wire or scale
+        shading.path = Path::fast, shading.wireframe = false, shading.scale = 1;
+        if (!fast_ || !(shading == fast_settings_) || width != fast_width_ ||
+            height != fast_height_) {
+            fast::FastOptions o;
+            o.render = options;
+            fast_ = std::make_unique<fast::Renderer>(models_, width, height, o);
+            fast_settings_ = shading, fast_width_ = width, fast_height_ = height;
+        }
+        stats_.pixels_shaded = fast_->render(camera).tiles.shaded;
+        frame_ = &fast_->frame();
+    } else {
+        perspective::ColourTarget target = perspective::colour_target(width, height);
+        perspective::PipelineCounts counts;
+        if (settings.path == Path::lesson07) {
+            counts = normal_mapping::render(models_, camera, options, target);
+        } else {
+            shadows::ShadowOptions shadowed;
+            shadows::set_lights(shadowed, request_.view, request_.one_light);
+            shadowed.render.specular = options.specular;
+            shadowed.render.filter = options.filter;
+            shadowed.render.normal_map = options.normal_map;
+            shadowed.render.output = options.output;
+            const float aspect = static_cast<float>(width) / static_cast<float>(height);
+            const shadows::ShadowMap map =
+                shadows::shadow_map_for(models_, camera, aspect, shadowed);
+            counts = shadows::render(models_, camera, shadowed, map, target);
+        }
+        stats_.pixels_shaded = counts.fragments;
+        picture_ = std::move(target.colour());
+        frame_ = &picture_;
+    }
+    if (settings.wireframe) {
+        if (frame_ != &picture_) picture_ = *frame_;
+        draw_wire_overlay(picture_, models_, camera, kWire);
+        frame_ = &picture_;
+    }
+    return *frame_;
+}
+
+}  // namespace viewer

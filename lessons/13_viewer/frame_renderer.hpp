@@ -1,0 +1,50 @@
+// What the viewer shows each frame: the scene drawn by the renderer the
+// settings name (lesson 12's fast path, lesson 07's or lesson 08's), at the
+// framebuffer's size, with the wireframe over it if asked. The fast
+// renderer is kept between frames and built again only when the size or a
+// shading option changes.
+//
+//   viewer::FrameRenderer renderer(scene.models, request);
+//   const rl::Image& frame = renderer.render(settings, camera, 800, 600);
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "07_normal_mapping/scene.hpp"
+#include "12_fast/renderer.hpp"
+#include "controls.hpp"
+
+namespace viewer {
+
+struct FrameStats {
+    std::size_t triangles = 0;      // sent to the renderer
+    std::size_t pixels_shaded = 0;  // fragments shaded (the fast path: each visible pixel once)
+};
+
+class FrameRenderer {
+  public:
+    // `request` is the view and lesson 07's options the scene was loaded with
+    // (its lighting and output set by normal_mapping::load_scene).
+    FrameRenderer(const std::vector<normal_mapping::MappedModel>& models,
+                  const normal_mapping::MappedView& request);
+    const rl::Image& render(const Settings& settings, const perspective::Camera& camera, int width,
+                            int height);
+    const FrameStats& stats() const { return stats_; }
+    const rl::Image& frame() const { return *frame_; }
+
+  private:
+    normal_mapping::RenderOptions options_for(const Settings& settings) const;
+
+    const std::vector<normal_mapping::MappedModel>& models_;
+    normal_mapping::MappedView request_;
+    std::size_t faces_ = 0;
+    std::unique_ptr<fast::Renderer> fast_;
+    Settings fast_settings_;  // what fast_ was built for
+    int fast_width_ = 0, fast_height_ = 0;
+    rl::Image picture_;  // lessons 07 and 08 draw here (and the wireframe goes on a copy)
+    const rl::Image* frame_ = &picture_;
+    FrameStats stats_;
+};
+
+}  // namespace viewer

@@ -1,0 +1,139 @@
+// Lesson 13: the viewer. Lesson 12's fast path (or lesson 07's, or lesson
+// 08's with shadows) live in a window: orbit with the mouse, switch the
+// methods with keys, watch the frame time. Read docs/13_viewer.md beside it.
+#include <SDL.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <deque>
+#include <stdexcept>
+#include <vector>
+
+#include "07_normal_mapping/mapped_cli.hpp"
+#include "12_fast/orbit.hpp"
+#include "controls.hpp"
+#include "frame_renderer.hpp"
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "sdl_window.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Lesson 13, the viewer: lesson 12's fast path (or lesson 07's renderer, or lesson 08's "
+        "with shadows) live in a window; orbit, switch methods and watch the frame time."};
+    app.footer(viewer::key_help());
+    rl::ImageOptions window{"", 800, 800};
+    normal_mapping::MappedCli cli;
+    cli.every_normal_map = true;  // the N key switches between them
+    normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
+    app.add_option("--width", window.width, "Window width in pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 16384));
+    app.add_option("--height", window.height, "Window height in pixels")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 16384));
+    int frames = 0;
+    app.add_option("--frames", frames,
+                   "Render this many frames along lesson 12's orbit (the last is the view the "
+                   "camera options give), then stop (0: run until the window is closed)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1000));
+    std::string screenshot;
+    app.add_option("-o,--screenshot", screenshot,
+                   "Write the last frame, read back from the window, here (.tga or .png); "
+                   "without --frames, after one frame");
+    std::string keys;
+    app.add_option("--keys", keys,
+                   "Key presses to send through the window's event queue before the first "
+                   "frame, one character each as the list below names them (at most 256)")
+        ->check([](const std::string& text) -> std::string {
+            if (text.size() > 256) return "at most 256 keys";
+            for (char c : text)
+                if (!viewer::key_named(c)) return std::string("no key is named '") + c + "'";
+            return {};
+        });
+    bool vsync = false;
+    app.add_flag("--vsync", vsync,
+                 "Wait for the display's refresh (the frame time is then not "
+                 "the renderer's)");
+    CLI11_PARSE(app, argc, argv);
+    const int width = window.width, height = window.height;
+
+    return rl::guarded_main("13_viewer", [&] {
+        if (!screenshot.empty()) {
+            rl::check_image_output(screenshot);
+            frames = std::max(frames, 1);  // a screenshot alone: one frame, then stop
+        }
+        normal_mapping::MappedScene scene =
+            normal_mapping::load_scene(cli, width, height, "13_viewer");
+        const perspective::Box box = normal_mapping::scene_box(scene.models);
+        viewer::FrameRenderer renderer(scene.models, cli);
+        viewer::Settings settings;
+        settings.specular = cli.options.specular;
+        settings.filter = cli.options.filter;
+        settings.normal_map = cli.options.normal_map;
+        viewer::Orbit orbit = viewer::orbit_of(scene.camera);
+        const viewer::Orbit first_orbit = orbit;
+        // The first frame, drawn before the window opens: a size the memory
+        // cannot hold fails here with the programs' message and no window, and
+        // the frame times shown leave out building the fast renderer.
+        renderer.render(settings, scene.camera, width, height);
+
+        viewer::SdlWindow sdl("rasterlab 13_viewer", width, height, vsync);
+        sdl.send_keys(keys);
+        std::deque<double> recent, loops;  // the last 30 frames' render times, whole loops
+        double median = 0;
+        for (int i = 0; frames == 0 || i < frames; ++i) {
+            const auto loop_start = std::chrono::steady_clock::now();
+            viewer::Input input = sdl.poll();
+            if (input.quit) break;
+            for (viewer::Key key : input.keys) {
+                viewer::apply(key, settings, orbit);
+                if (key == viewer::Key::reset) orbit = first_orbit;
+            }
+            viewer::drag(orbit, input.drag_x, input.drag_y);
+            viewer::zoom(orbit, input.wheel);
+            const int w = std::max(1, sdl.width() / settings.scale);
+            const int h = std::max(1, sdl.height() / settings.scale);
+            const float aspect = static_cast<float>(w) / static_cast<float>(h);
+            // Scripted frames follow lesson 12's orbit, so that the last one is
+            // exactly the camera the options give (and lesson 12's image).
+            const perspective::Camera camera =
+                frames > 0 ? fast::orbit(scene.camera, i, frames)
+                           : viewer::camera_of(orbit, scene.camera, box, aspect);
+            const auto start = std::chrono::steady_clock::now();
+            const rl::Image& frame = renderer.render(settings, camera, w, h);
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            recent.push_back(ms);
+            if (recent.size() > 30) recent.pop_front();
+            median = viewer::median(recent);
+            const bool last = frames > 0 && i == frames - 1;
+            sdl.show(frame, last && !screenshot.empty() ? &screenshot : nullptr);
+            loops.push_back(std::chrono::duration<double, std::milli>(
+                                std::chrono::steady_clock::now() - loop_start)
+                                .count());
+            if (loops.size() > 30) loops.pop_front();
+            if (i % 10 == 0 || last) {
+                char title[512];
+                std::snprintf(title, sizeof title,
+                              "rasterlab 13_viewer: %.1f ms per frame (median of the last %zu), "
+                              "%zu triangles, %zu pixels shaded, %dx%d; %s",
+                              median, recent.size(), renderer.stats().triangles,
+                              renderer.stats().pixels_shaded, w, h,
+                              viewer::describe(settings).c_str());
+                sdl.set_title(title);
+            }
+        }
+        std::printf(
+            "%d frames of %dx%d in a %dx%d window: median %.2f ms per frame to render, "
+            "%.2f ms per loop with the upload and the window (the last %zu); settings: "
+            "%s%s%s\n",
+            frames, renderer.frame().width(), renderer.frame().height(), sdl.width(), sdl.height(),
+            median, viewer::median(loops), recent.size(), viewer::describe(settings).c_str(),
+            screenshot.empty() ? "" : "; screenshot ", screenshot.c_str());
+        return 0;
+    });
+}

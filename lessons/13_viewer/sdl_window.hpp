@@ -1,0 +1,62 @@
+// The window: SDL2's window, renderer and one streaming texture the frame
+// is uploaded to each time (rasterlab's rows run bottom first, so the copy to
+// the window flips them), the input gathered since the last frame, and the
+// last frame read back from the window itself (SDL_RenderReadPixels) for
+// the headless tests.
+//
+//   viewer::SdlWindow window("13_viewer", 800, 600, false);
+//   viewer::Input input = window.poll();
+//   window.show(frame, nullptr);
+#pragma once
+
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "controls.hpp"
+#include "rasterlab/image.hpp"
+
+struct SDL_Window;
+struct SDL_Renderer;
+struct SDL_Texture;
+
+namespace viewer {
+
+struct Input {
+    bool quit = false;
+    std::vector<Key> keys;
+    int drag_x = 0, drag_y = 0;  // pixels dragged with the left button
+    int wheel = 0;               // steps, towards the screen positive
+};
+
+class SdlWindow {
+  public:
+    // Throws std::runtime_error with SDL's message (no display, say).
+    SdlWindow(const char* title, int width, int height, bool vsync);
+    ~SdlWindow();
+    SdlWindow(const SdlWindow&) = delete;
+    SdlWindow& operator=(const SdlWindow&) = delete;
+
+    // Puts key presses (named as key_named() names them) in the event queue,
+    // as if they were typed: poll() reads them like any other.
+    void send_keys(const std::string& keys);
+    Input poll();
+    int width() const { return width_; }  // the window's drawable size now
+    int height() const { return height_; }
+    // Shows `frame`, stretched to the window; if `screenshot`, first reads the
+    // window's pixels back and writes them there.
+    void show(const rl::Image& frame, const std::string* screenshot);
+    void set_title(const char* title);
+
+  private:
+    SDL_Window* window_ = nullptr;
+    SDL_Renderer* renderer_ = nullptr;
+    SDL_Texture* texture_ = nullptr;
+    int texture_width_ = 0, texture_height_ = 0;
+    int width_ = 0, height_ = 0;
+};
+
+// The median of the frame times shown in the title.
+double median(const std::deque<double>& times);
+
+}  // namespace viewer
