@@ -55,7 +55,7 @@ std::string key_help() {
     return text;
 }
 
-void apply(Key key, Settings& s, Orbit& orbit) {
+void apply(Key key, Settings& s, Orbit& orbit, const Settings& first, const Orbit& first_orbit) {
     using normal_mapping::NormalMap;
     using textures::Filter;
     switch (key) {
@@ -66,10 +66,10 @@ void apply(Key key, Settings& s, Orbit& orbit) {
             orbit.yaw += kTurnDegrees;
             break;
         case Key::move_closer:
-            orbit.distance *= kMoveFactor;
+            zoom(orbit, 1);
             break;
         case Key::move_away:
-            orbit.distance /= kMoveFactor;
+            zoom(orbit, -1);
             break;
         case Key::next_path:
             s.path = s.path == Path::fast ? Path::lesson07 : Path::fast;
@@ -98,7 +98,8 @@ void apply(Key key, Settings& s, Orbit& orbit) {
             s.scale = std::min(4, s.scale * 2);
             break;
         case Key::reset:
-            s = Settings{};
+            s = first;
+            orbit = first_orbit;
             break;
     }
 }
@@ -110,35 +111,61 @@ void drag(Orbit& orbit, int dx, int dy) {
 }
 
 void zoom(Orbit& orbit, int steps) {
-    orbit.distance *= std::pow(kMoveFactor, static_cast<float>(steps));
+    orbit.distance = std::clamp(orbit.distance * std::pow(kMoveFactor, static_cast<float>(steps)),
+                                orbit.nearest, orbit.farthest);
 }
+
+namespace {
+
+// The orbit's frame: `up` (unit), and the directions of yaw 0 and yaw 90
+// square to it, yaw 0 pointing from the target to the first camera's eye.
+struct Frame {
+    rl::vec3 up, ahead, side;
+};
+Frame frame_of(const perspective::Camera& start) {
+    Frame f;
+    f.up = rl::normalize(start.up);
+    const rl::vec3 offset = start.eye - start.target;
+    rl::vec3 level = offset - f.up * rl::dot(offset, f.up);
+    if (!(rl::length(level) > 1e-6f * rl::length(offset)))  // looking straight along up
+        level = std::abs(f.up.x) < 0.9f ? rl::cross(f.up, rl::vec3{1, 0, 0})
+                                        : rl::cross(f.up, rl::vec3{0, 1, 0});
+    f.ahead = rl::normalize(level);
+    f.side = rl::cross(f.up, f.ahead);
+    return f;
+}
+
+}  // namespace
 
 Orbit orbit_of(const perspective::Camera& camera) {
     const rl::vec3 offset = camera.eye - camera.target;
     Orbit orbit;
     orbit.distance = rl::length(offset);
     if (!(orbit.distance > 0)) return orbit;
+    orbit.nearest = orbit.distance / 1000, orbit.farthest = orbit.distance * 1000;
     constexpr float degrees = 180 / std::numbers::pi_v<float>;
+    const float along_up = rl::dot(offset, frame_of(camera).up) / orbit.distance;
     orbit.pitch =
-        std::clamp(std::asin(std::clamp(offset.y / orbit.distance, -1.0f, 1.0f)) * degrees,
-                   -kMostPitch, kMostPitch);
-    orbit.yaw = std::atan2(offset.x, offset.z) * degrees;
+        std::clamp(std::asin(std::clamp(along_up, -1.0f, 1.0f)) * degrees, -kMostPitch, kMostPitch);
     return orbit;
 }
 
 perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
-                              const perspective::Box& box, float aspect) {
+                              const perspective::ViewOptions& view, const perspective::Box& box,
+                              float aspect) {
     constexpr float radians = std::numbers::pi_v<float> / 180;
     const float yaw = orbit.yaw * radians, pitch = orbit.pitch * radians;
-    const rl::vec3 offset{std::cos(pitch) * std::sin(yaw), std::sin(pitch),
-                          std::cos(pitch) * std::cos(yaw)};
+    const Frame f = frame_of(start);
+    const rl::vec3 offset = (f.ahead * std::cos(yaw) + f.side * std::sin(yaw)) * std::cos(pitch) +
+                            f.up * std::sin(pitch);
     const rl::vec3 eye = start.target + offset * orbit.distance;
-    perspective::ViewOptions view;
-    view.eye = {eye.x, eye.y, eye.z};
-    view.target = {start.target.x, start.target.y, start.target.z};
-    view.up = {0, 1, 0};
-    view.camera.fov_y = start.fov_y;
-    return perspective::resolve_camera(view, box, aspect);  // near and far fitted to the box
+    perspective::ViewOptions v = view;  // --near, --far as given; up as the first camera's
+    v.models.clear();
+    v.eye = {eye.x, eye.y, eye.z};
+    v.target = {start.target.x, start.target.y, start.target.z};
+    v.up = {start.up.x, start.up.y, start.up.z};
+    v.camera.fov_y = start.fov_y;
+    return perspective::resolve_camera(v, box, aspect);
 }
 
 std::string describe(const Settings& s) {

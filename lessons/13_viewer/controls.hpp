@@ -5,8 +5,8 @@
 //
 //   viewer::Settings settings;
 //   viewer::Orbit orbit = viewer::orbit_of(camera);
-//   viewer::apply(viewer::Key::next_path, settings, orbit);   // fast -> lesson 07
-//   const perspective::Camera seen = viewer::camera_of(orbit, camera, box, aspect);
+//   viewer::apply(viewer::Key::next_path, settings, orbit, first, first_orbit);  // fast -> 07
+//   const perspective::Camera seen = viewer::camera_of(orbit, camera, view, box, aspect);
 #pragma once
 
 #include <array>
@@ -14,6 +14,7 @@
 #include <string>
 
 #include "05_perspective/camera.hpp"
+#include "05_perspective/view_options.hpp"
 #include "06_shading/lighting.hpp"
 #include "07_normal_mapping/normal_mapped.hpp"
 #include "rasterlab/named_enum.hpp"
@@ -41,9 +42,13 @@ struct Settings {
 };
 
 // The camera as an orbit: the eye at `distance` from the target, turned
-// `yaw` degrees about the up axis and `pitch` degrees above the horizon.
+// `yaw` degrees about the up axis (from where the first camera stood) and
+// `pitch` degrees above the plane square to it. The distance stays within
+// [nearest, farthest], a thousand times either way of the first one, so that
+// zooming can neither put the eye on the target nor past a float's range.
 struct Orbit {
     float yaw = 0, pitch = 0, distance = 1;
+    float nearest = 1e-3f, farthest = 1e3f;
 };
 
 enum class Key {
@@ -59,7 +64,7 @@ enum class Key {
     wireframe,   // W: lesson 01's lines over the picture
     finer,
     coarser,  // + and -: the framebuffer's scale, 1, 1/2, 1/4 of the window
-    reset,    // R: the first view and settings again
+    reset,    // R: the first view and settings again (those the command line gave)
 };
 
 // The key named by one character of the --keys script and of --help's list
@@ -69,21 +74,26 @@ std::optional<Key> key_named(char c);
 // The lines --help prints: every key and what it does.
 std::string key_help();
 
-// Changes the settings or the orbit as `key` says.
-void apply(Key key, Settings& settings, Orbit& orbit);
+// Changes the settings or the orbit as `key` says; reset goes back to
+// `first` and `first_orbit` (what the command line asked for).
+void apply(Key key, Settings& settings, Orbit& orbit, const Settings& first,
+           const Orbit& first_orbit);
 
 // Drags and wheel steps: degrees per pixel dragged, and the distance's
 // factor per wheel step.
 void drag(Orbit& orbit, int dx, int dy);
 void zoom(Orbit& orbit, int steps);
 
-// The orbit of a camera about its target (its eye, seen from the target).
+// The orbit of a camera about its target, measured about its own up axis:
+// yaw 0 where it stands.
 Orbit orbit_of(const perspective::Camera& camera);
 
-// The camera of an orbit: `start`'s target, up and field of view, the eye
-// on the orbit, near and far fitted to `box` as the programs frame them.
+// The camera of an orbit about `start` (the first camera: its target, up and
+// field of view): the eye on the orbit, near and far as `view` gives them
+// (--near, --far) or fitted to `box`, as the programs frame them.
 perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
-                              const perspective::Box& box, float aspect);
+                              const perspective::ViewOptions& view, const perspective::Box& box,
+                              float aspect);
 
 // One line of the current settings, for the title bar and the tests.
 std::string describe(const Settings& settings);

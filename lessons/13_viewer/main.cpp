@@ -75,6 +75,7 @@ int main(int argc, char** argv) {
         settings.normal_map = cli.options.normal_map;
         viewer::Orbit orbit = viewer::orbit_of(scene.camera);
         const viewer::Orbit first_orbit = orbit;
+        const viewer::Settings first_settings = settings;
         // The first frame, drawn before the window opens: a size the memory
         // cannot hold fails here with the programs' message and no window, and
         // the frame times shown leave out building the fast renderer.
@@ -84,14 +85,13 @@ int main(int argc, char** argv) {
         sdl.send_keys(keys);
         std::deque<double> recent, loops;  // the last 30 frames' render times, whole loops
         double median = 0;
-        for (int i = 0; frames == 0 || i < frames; ++i) {
+        int drawn = 0;
+        for (int i = 0; frames == 0 || i < frames; ++i, ++drawn) {
             const auto loop_start = std::chrono::steady_clock::now();
             viewer::Input input = sdl.poll();
             if (input.quit) break;
-            for (viewer::Key key : input.keys) {
-                viewer::apply(key, settings, orbit);
-                if (key == viewer::Key::reset) orbit = first_orbit;
-            }
+            for (viewer::Key key : input.keys)
+                viewer::apply(key, settings, orbit, first_settings, first_orbit);
             viewer::drag(orbit, input.drag_x, input.drag_y);
             viewer::zoom(orbit, input.wheel);
             const int w = std::max(1, sdl.width() / settings.scale);
@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
             // exactly the camera the options give (and lesson 12's image).
             const perspective::Camera camera =
                 frames > 0 ? fast::orbit(scene.camera, i, frames)
-                           : viewer::camera_of(orbit, scene.camera, box, aspect);
+                           : viewer::camera_of(orbit, scene.camera, cli.view, box, aspect);
             const auto start = std::chrono::steady_clock::now();
             const rl::Image& frame = renderer.render(settings, camera, w, h);
             const double ms =
@@ -131,7 +131,7 @@ int main(int argc, char** argv) {
             "%d frames of %dx%d in a %dx%d window: median %.2f ms per frame to render, "
             "%.2f ms per loop with the upload and the window (the last %zu); settings: "
             "%s%s%s\n",
-            frames, renderer.frame().width(), renderer.frame().height(), sdl.width(), sdl.height(),
+            drawn, renderer.frame().width(), renderer.frame().height(), sdl.width(), sdl.height(),
             median, viewer::median(loops), recent.size(), viewer::describe(settings).c_str(),
             screenshot.empty() ? "" : "; screenshot ", screenshot.c_str());
         return 0;

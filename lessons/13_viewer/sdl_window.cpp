@@ -54,6 +54,8 @@ std::optional<Key> key_of(SDL_Keycode code) {
         case SDLK_MINUS:
         case SDLK_KP_MINUS:
             return Key::coarser;
+        case SDLK_v:
+            return std::nullopt;  // 'v' names the down arrow in a script, not V
         default:
             if (code >= SDLK_a && code <= SDLK_z) return key_named(static_cast<char>(code));
             return std::nullopt;
@@ -63,7 +65,17 @@ std::optional<Key> key_of(SDL_Keycode code) {
 }  // namespace
 
 SdlWindow::SdlWindow(const char* title, int width, int height, bool vsync) {
-    if (SDL_Init(SDL_INIT_VIDEO) != 0) sdl_failed("SDL_Init (is there a display?)");
+    if (SDL_Init(SDL_INIT_VIDEO) != 0)
+        throw std::runtime_error(std::string("no display to open a window on (SDL_Init: ") +
+                                 SDL_GetError() + "); set DISPLAY, or run under xvfb-run");
+    // Without a display SDL falls back to drivers that show nothing: a window
+    // nobody sees, running until killed, is refused instead.
+    const std::string driver = SDL_GetCurrentVideoDriver() ? SDL_GetCurrentVideoDriver() : "";
+    if (driver == "offscreen" || driver == "dummy" || driver == "evdev") {
+        SDL_Quit();
+        throw std::runtime_error("no display to open a window on (SDL's video driver is '" +
+                                 driver + "'); set DISPLAY, or run under xvfb-run");
+    }
     // Frames are copied to the window as they are: nearest texels when the
     // framebuffer is smaller than the window, no smoothing that would hide
     // the resolution scale.

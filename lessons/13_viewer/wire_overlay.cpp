@@ -6,10 +6,6 @@
 
 namespace viewer {
 
-namespace {
-
-// The segment ab of clip space, cut to w >= near (in front of the eye);
-// false when nothing of it is left.
 bool cut_to_front(perspective::ClipPosition& a, perspective::ClipPosition& b, double near) {
     if (a.w < near && b.w < near) return false;
     if (a.w < near) std::swap(a, b);  // now a is in front
@@ -19,8 +15,6 @@ bool cut_to_front(perspective::ClipPosition& a, perspective::ClipPosition& b, do
     }
     return true;
 }
-
-}  // namespace
 
 std::size_t draw_wire_overlay(rl::Image& image,
                               const std::vector<normal_mapping::MappedModel>& models,

@@ -8,10 +8,15 @@
 
 #include <vector>
 
+#include "05_perspective/varyings.hpp"
 #include "07_normal_mapping/scene.hpp"
 #include "rasterlab/image.hpp"
 
 namespace viewer {
+
+// The segment ab of clip space cut to w >= near (the part in front of the
+// eye); false when nothing of it is left.
+bool cut_to_front(perspective::ClipPosition& a, perspective::ClipPosition& b, double near);
 
 // Returns the number of edges drawn (each triangle's three, shared ones twice).
 std::size_t draw_wire_overlay(rl::Image& image,

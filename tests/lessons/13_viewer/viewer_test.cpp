@@ -15,34 +15,39 @@ namespace {
 using viewer::Key;
 
 TEST(Keys, EachKeyChangesWhatItSays) {
-    viewer::Settings s;
-    viewer::Orbit o{10, 20, 4};
-    viewer::apply(Key::next_path, s, o);
+    viewer::Settings first;
+    first.filter = textures::Filter::bilinear;  // as if the command line asked for it
+    const viewer::Orbit first_orbit{10, 20, 4, 0.1f, 40};
+    viewer::Settings s = first;
+    viewer::Orbit o = first_orbit;
+    viewer::apply(Key::next_path, s, o, first, first_orbit);
     EXPECT_EQ(s.path, viewer::Path::lesson07);
-    viewer::apply(Key::next_path, s, o);
+    viewer::apply(Key::next_path, s, o, first, first_orbit);
     EXPECT_EQ(s.path, viewer::Path::fast);
-    viewer::apply(Key::shadows, s, o);
+    viewer::apply(Key::shadows, s, o, first, first_orbit);
     EXPECT_EQ(s.path, viewer::Path::shadows);
-    viewer::apply(Key::specular, s, o);
+    viewer::apply(Key::specular, s, o, first, first_orbit);
     EXPECT_EQ(s.specular, shading::Specular::phong);
-    viewer::apply(Key::filter, s, o);
-    EXPECT_EQ(s.filter, textures::Filter::nearest);
-    viewer::apply(Key::normal_map, s, o);
+    viewer::apply(Key::filter, s, o, first, first_orbit);
+    EXPECT_EQ(s.filter, textures::Filter::trilinear);  // bilinear -> trilinear
+    viewer::apply(Key::normal_map, s, o, first, first_orbit);
     EXPECT_EQ(s.normal_map, normal_mapping::NormalMap::object);
-    viewer::apply(Key::wireframe, s, o);
+    viewer::apply(Key::wireframe, s, o, first, first_orbit);
     EXPECT_TRUE(s.wireframe);
-    viewer::apply(Key::coarser, s, o);
-    viewer::apply(Key::coarser, s, o);
-    viewer::apply(Key::coarser, s, o);
+    viewer::apply(Key::coarser, s, o, first, first_orbit);
+    viewer::apply(Key::coarser, s, o, first, first_orbit);
+    viewer::apply(Key::coarser, s, o, first, first_orbit);
     EXPECT_EQ(s.scale, 4);  // no coarser than a quarter
-    viewer::apply(Key::finer, s, o);
+    viewer::apply(Key::finer, s, o, first, first_orbit);
     EXPECT_EQ(s.scale, 2);
-    viewer::apply(Key::turn_right, s, o);
+    viewer::apply(Key::turn_right, s, o, first, first_orbit);
     EXPECT_GT(o.yaw, 10);
-    viewer::apply(Key::move_closer, s, o);
+    viewer::apply(Key::move_closer, s, o, first, first_orbit);
     EXPECT_LT(o.distance, 4);
-    viewer::apply(Key::reset, s, o);
-    EXPECT_EQ(s, viewer::Settings{});
+    viewer::apply(Key::reset, s, o, first, first_orbit);
+    EXPECT_EQ(s, first);  // the command line's settings, not the built-in ones
+    EXPECT_EQ(o.yaw, first_orbit.yaw);
+    EXPECT_EQ(o.distance, first_orbit.distance);
 }
 
 TEST(Keys, EveryKeyHasANameAndAHelpLine) {
@@ -60,7 +65,7 @@ TEST(Orbit, GivesBackTheCameraItCameFrom) {
     perspective::Box box;
     box.add(rl::vec3{-1, 0, -1});
     box.add(rl::vec3{1, 1, 1});
-    const perspective::Camera back = viewer::camera_of(viewer::orbit_of(c), c, box, 1.0f);
+    const perspective::Camera back = viewer::camera_of(viewer::orbit_of(c), c, {}, box, 1.0f);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(back.eye[k], c.eye[k], 1e-4f);
     EXPECT_GT(back.near, 0);
     EXPECT_LT(back.near, back.far);
@@ -74,7 +79,36 @@ TEST(Orbit, DraggingStopsShortOfThePoles) {
     perspective::Box box;
     box.add(rl::vec3{-1, -1, -1});
     box.add(rl::vec3{1, 1, 1});
-    EXPECT_NO_THROW(viewer::camera_of(o, c, box, 1.0f));  // up is never the view direction
+    EXPECT_NO_THROW(viewer::camera_of(o, c, {}, box, 1.0f));  // up is never the view direction
+}
+
+TEST(Orbit, ZoomingStopsBeforeTheTargetAndBeforeInfinity) {
+    perspective::Camera c;  // eye 3 from the target
+    viewer::Orbit o = viewer::orbit_of(c);
+    viewer::zoom(o, 100000);
+    EXPECT_FLOAT_EQ(o.distance, 3.0f / 1000);
+    perspective::Box box;
+    box.add(rl::vec3{-1, -1, -1});
+    box.add(rl::vec3{1, 1, 1});
+    EXPECT_NO_THROW(viewer::camera_of(o, c, {}, box, 1.0f));
+    viewer::zoom(o, -100000);
+    EXPECT_FLOAT_EQ(o.distance, 3.0f * 1000);
+    EXPECT_NO_THROW(viewer::camera_of(o, c, {}, box, 1.0f));
+}
+
+TEST(Orbit, TurnsAboutTheCamerasOwnUp) {
+    perspective::Camera c;
+    c.up = {0, 0, 1};  // z up
+    c.eye = {3, 0, 1};
+    c.target = {0, 0, 0};
+    perspective::Box box;
+    box.add(rl::vec3{-1, -1, -1});
+    box.add(rl::vec3{1, 1, 1});
+    viewer::Orbit o = viewer::orbit_of(c);
+    o.yaw += 90;
+    const perspective::Camera turned = viewer::camera_of(o, c, {}, box, 1.0f);
+    EXPECT_NEAR(turned.eye.z, c.eye.z, 1e-4f);  // the height above the target kept
+    EXPECT_NEAR(rl::length(turned.eye), rl::length(c.eye), 1e-4f);
 }
 
 struct Scene {
@@ -119,6 +153,20 @@ TEST(Wireframe, DrawsEdgesOverThePicture) {
     const rl::Image plain = renderer.render(settings, s.scene.camera, 96, 64);
     settings.wireframe = true;
     EXPECT_NE(renderer.render(settings, s.scene.camera, 96, 64), plain);
+}
+
+TEST(Wireframe, ASegmentIsCutWhereItCrossesTheNearPlane) {
+    perspective::ClipPosition a{0, 0, 0, 2}, b{4, 0, 0, -2};
+    ASSERT_TRUE(viewer::cut_to_front(a, b, 0.5));
+    EXPECT_DOUBLE_EQ(a.w, 2);
+    EXPECT_DOUBLE_EQ(b.w, 0.5);
+    EXPECT_DOUBLE_EQ(b.x, 1.5);  // t = (2 - 0.5) / (2 + 2) = 0.375 of the way to b
+    perspective::ClipPosition c{0, 0, 0, -1}, d{1, 1, 1, 3};
+    ASSERT_TRUE(viewer::cut_to_front(c, d, 0.5));  // either end may be the one behind
+    EXPECT_DOUBLE_EQ(c.w, 3);
+    EXPECT_DOUBLE_EQ(d.w, 0.5);
+    perspective::ClipPosition e{0, 0, 0, 0.1}, f{0, 0, 0, -3};
+    EXPECT_FALSE(viewer::cut_to_front(e, f, 0.5));  // wholly behind
 }
 
 TEST(Wireframe, EdgesBehindTheEyeAreCutNotDivided) {
