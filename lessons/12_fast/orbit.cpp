@@ -17,6 +17,10 @@ perspective::Camera orbit(const perspective::Camera& camera, int frame, int fram
 
 double median_after_first(std::vector<double> times) {
     if (times.size() > 1) times.erase(times.begin());
+    return median(std::move(times));
+}
+
+double median(std::vector<double> times) {
     if (times.empty()) return 0;
     const auto middle = times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2);
     std::nth_element(times.begin(), middle, times.end());

@@ -14,6 +14,9 @@ namespace fast {
 
 perspective::Camera orbit(const perspective::Camera& camera, int frame, int frames);
 
+// The median of times (0 for none).
+double median(std::vector<double> times);
+
 // The median of times[1..], or times[0] when there is only one.
 double median_after_first(std::vector<double> times);
 

@@ -11,24 +11,25 @@ namespace viewer {
 namespace {
 
 struct KeyName {
-    char name;
+    char name;    // in a --keys script
+    char letter;  // the letter key that gives it, lower case ('\0': an arrow, + or -)
     Key key;
     const char* what;
 };
 constexpr KeyName kKeys[] = {
-    {'<', Key::turn_left, "left arrow: turn the camera left about the target"},
-    {'>', Key::turn_right, "right arrow: turn the camera right about the target"},
-    {'^', Key::move_closer, "up arrow: move towards the target"},
-    {'v', Key::move_away, "down arrow: move away from the target"},
-    {'p', Key::next_path, "P: the renderer, lesson 12's fast path or lesson 07's"},
-    {'s', Key::shadows, "S: shadows on or off (lesson 08's renderer)"},
-    {'m', Key::specular, "M: the highlight, Blinn-Phong or Phong"},
-    {'f', Key::filter, "F: the texture filter, trilinear, nearest, bilinear"},
-    {'n', Key::normal_map, "N: the normal map, tangent, object or none"},
-    {'w', Key::wireframe, "W: the wireframe (lesson 01's lines) over the picture"},
-    {'+', Key::finer, "+: a finer framebuffer (up to the window's size)"},
-    {'-', Key::coarser, "-: a coarser framebuffer (1/2, then 1/4 of the window)"},
-    {'r', Key::reset, "R: the first view and settings again"},
+    {'<', '\0', Key::turn_left, "left arrow: turn the camera left about the target"},
+    {'>', '\0', Key::turn_right, "right arrow: turn the camera right about the target"},
+    {'^', '\0', Key::move_closer, "up arrow: move towards the target"},
+    {'v', '\0', Key::move_away, "down arrow: move away from the target"},
+    {'p', 'p', Key::next_path, "P: the renderer, lesson 12's fast path or lesson 07's"},
+    {'s', 's', Key::shadows, "S: shadows on or off (lesson 08's renderer)"},
+    {'m', 'm', Key::specular, "M: the highlight, Blinn-Phong or Phong"},
+    {'f', 'f', Key::filter, "F: the texture filter, trilinear, nearest, bilinear"},
+    {'n', 'n', Key::normal_map, "N: the normal map, tangent, object or none"},
+    {'w', 'w', Key::wireframe, "W: the wireframe (lesson 01's lines) over the picture"},
+    {'+', '\0', Key::finer, "+: a finer framebuffer (up to the window's size)"},
+    {'-', '\0', Key::coarser, "-: a coarser framebuffer (1/2, then 1/4 of the window)"},
+    {'r', 'r', Key::reset, "R: the first view and settings again"},
 };
 
 constexpr float kTurnDegrees = 5, kMoveFactor = 0.9f, kDegreesPerPixel = 0.4f;
@@ -41,6 +42,12 @@ E next(E value, const std::array<E, N>& order) {
 }
 
 }  // namespace
+
+std::optional<Key> key_of_letter(char c) {
+    for (const KeyName& k : kKeys)
+        if (k.letter != '\0' && k.letter == c) return k.key;
+    return std::nullopt;
+}
 
 std::optional<Key> key_named(char c) {
     for (const KeyName& k : kKeys)

@@ -71,6 +71,10 @@ enum class Key {
 // ('<' '>' '^' 'v' for the arrows), or none.
 std::optional<Key> key_named(char c);
 
+// The key a letter key gives ('p' for P), or none (V, say: in a script 'v'
+// names the down arrow, but the letter V does nothing).
+std::optional<Key> key_of_letter(char c);
+
 // The lines --help prints: every key and what it does.
 std::string key_help();
 

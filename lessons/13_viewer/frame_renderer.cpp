@@ -49,11 +49,8 @@ const rl::Image& FrameRenderer::render(const Settings& settings, const perspecti
             counts = normal_mapping::render(models_, camera, options, target);
         } else {
             shadows::ShadowOptions shadowed;
+            shadowed.render = options;  // then its lights from lesson 08's key light
             shadows::set_lights(shadowed, request_.view, request_.one_light);
-            shadowed.render.specular = options.specular;
-            shadowed.render.filter = options.filter;
-            shadowed.render.normal_map = options.normal_map;
-            shadowed.render.output = options.output;
             const float aspect = static_cast<float>(width) / static_cast<float>(height);
             const shadows::ShadowMap map =
                 shadows::shadow_map_for(models_, camera, aspect, shadowed);

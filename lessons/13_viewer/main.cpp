@@ -109,7 +109,7 @@ int main(int argc, char** argv) {
                     .count();
             recent.push_back(ms);
             if (recent.size() > 30) recent.pop_front();
-            median = viewer::median(recent);
+            median = fast::median({recent.begin(), recent.end()});
             const bool last = frames > 0 && i == frames - 1;
             sdl.show(frame, last && !screenshot.empty() ? &screenshot : nullptr);
             loops.push_back(std::chrono::duration<double, std::milli>(
@@ -132,8 +132,9 @@ int main(int argc, char** argv) {
             "%.2f ms per loop with the upload and the window (the last %zu); settings: "
             "%s%s%s\n",
             drawn, renderer.frame().width(), renderer.frame().height(), sdl.width(), sdl.height(),
-            median, viewer::median(loops), recent.size(), viewer::describe(settings).c_str(),
-            screenshot.empty() ? "" : "; screenshot ", screenshot.c_str());
+            median, fast::median({loops.begin(), loops.end()}), recent.size(),
+            viewer::describe(settings).c_str(), screenshot.empty() ? "" : "; screenshot ",
+            screenshot.c_str());
         return 0;
     });
 }

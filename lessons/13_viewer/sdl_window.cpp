@@ -2,7 +2,6 @@
 
 #include <SDL.h>
 
-#include <algorithm>
 #include <cctype>
 #include <optional>
 #include <stdexcept>
@@ -54,10 +53,8 @@ std::optional<Key> key_of(SDL_Keycode code) {
         case SDLK_MINUS:
         case SDLK_KP_MINUS:
             return Key::coarser;
-        case SDLK_v:
-            return std::nullopt;  // 'v' names the down arrow in a script, not V
         default:
-            if (code >= SDLK_a && code <= SDLK_z) return key_named(static_cast<char>(code));
+            if (code >= SDLK_a && code <= SDLK_z) return key_of_letter(static_cast<char>(code));
             return std::nullopt;
     }
 }
@@ -169,14 +166,6 @@ void SdlWindow::show(const rl::Image& frame, const std::string* screenshot) {
 
 void SdlWindow::set_title(const char* title) {
     SDL_SetWindowTitle(window_, title);
-}
-
-double median(const std::deque<double>& times) {
-    if (times.empty()) return 0;
-    std::vector<double> sorted(times.begin(), times.end());
-    const auto middle = sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2);
-    std::nth_element(sorted.begin(), middle, sorted.end());
-    return *middle;
 }
 
 }  // namespace viewer

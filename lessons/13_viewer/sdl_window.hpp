@@ -9,7 +9,6 @@
 //   window.show(frame, nullptr);
 #pragma once
 
-#include <deque>
 #include <string>
 #include <vector>
 
@@ -55,8 +54,5 @@ class SdlWindow {
     int texture_width_ = 0, texture_height_ = 0;
     int width_ = 0, height_ = 0;
 };
-
-// The median of the frame times shown in the title.
-double median(const std::deque<double>& times);
 
 }  // namespace viewer

@@ -56,6 +56,8 @@ TEST(Keys, EveryKeyHasANameAndAHelpLine) {
         EXPECT_NE(viewer::key_help().find(std::string("[") + c + "]"), std::string::npos) << c;
     }
     EXPECT_FALSE(viewer::key_named('x'));
+    EXPECT_EQ(viewer::key_of_letter('p'), Key::next_path);
+    EXPECT_FALSE(viewer::key_of_letter('v'));  // 'v' is the down arrow's name, not a letter key
 }
 
 TEST(Orbit, GivesBackTheCameraItCameFrom) {
