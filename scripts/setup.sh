@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs, with apt-get, every Debian package rasterlab builds with that is
 # not installed yet. Safe to run again: it does nothing when all are there.
-# `scripts/setup.sh fuzz` adds clang 14 and libFuzzer for scripts/fuzz.sh.
+# `scripts/setup.sh fuzz` adds clang 14 and libFuzzer for scripts/fuzz.sh;
+# `scripts/setup.sh site` adds MkDocs, KaTeX and Chromium for the docs site.
 set -euo pipefail
 
 packages=(
@@ -23,6 +24,10 @@ packages=(
 
 if [ "${1:-}" = "fuzz" ]; then
   packages+=(clang-14 libfuzzer-14-dev libclang-rt-14-dev)  # the fuzz targets
+fi
+if [ "${1:-}" = "site" ]; then
+  packages+=(mkdocs mkdocs-material python3-pymdownx libjs-katex  # the docs site, offline
+             chromium)                                           # its browser test
 fi
 
 missing=()
