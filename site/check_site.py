@@ -1,0 +1,345 @@
+#!/usr/bin/env python3
+"""Reads every page of the built docs site in headless Chromium, as a reader would.
+
+    site/check_site.py SITE_DIR [--docs docs] [--screenshots DIR]
+
+It serves SITE_DIR from http.server on 127.0.0.1 (a free port) and opens
+every HTML page in Chromium, driven over the DevTools protocol on a pipe
+(--remote-debugging-pipe: JSON messages ended by a NUL byte on fds 3 and 4),
+so it needs nothing but Python and Debian's chromium. On each page it checks
+that
+
+- no console error occurs: a script's console.error (site/typeset.js reports
+  a formula KaTeX cannot read that way), an uncaught exception, or a failed
+  load of any of the page's files;
+- every image (the pictures, the charts, the diagrams) loaded: naturalWidth > 0;
+- every link inside the site reaches a file the server answers with 200, and
+  its #anchor names an element of that page;
+- every formula was typeset: no `$`, `\\(` or `\\[` is left in the page's text
+  outside code, and the count of KaTeX's formulas equals the count of
+  formulas in the page's Markdown (docs/NAME.md), counted here on their own;
+
+and that the search box finds a lesson by a word of its text. A screenshot of
+each page goes to the screenshots folder. Exit 0 when every check holds, 1
+with every failure listed, 77 (CTest's skip) when Chromium is not installed.
+"""
+import argparse
+import base64
+import fcntl
+import functools
+import html.parser
+import http.server
+import json
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import urllib.error
+import urllib.parse
+import urllib.request
+
+SKIP = 77
+PAGE_TIMEOUT = 30.0  # seconds for one page to load; the slowest here took under 2
+WIDTH, HEIGHT = 1280, 900
+
+
+class Browser:
+    """Headless Chromium, one tab, spoken to over --remote-debugging-pipe."""
+
+    def __init__(self, chromium: str):
+        self.profile = tempfile.TemporaryDirectory(prefix="rasterlab-chromium-")
+        # Chromium reads commands on fd 3 and writes answers on fd 4. The pipe's
+        # ends are first moved above 9 so that the shell's redirections cannot
+        # overwrite one with the other.
+        to_browser_read, self.to_browser = _high_pipe()
+        self.from_browser, from_browser_write = _high_pipe()
+        # The flags keep Chromium off the network it would otherwise call home on.
+        flags = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+                 "--no-first-run", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync", "--disable-extensions",
+                 "--hide-scrollbars", "--remote-debugging-pipe",
+                 f"--user-data-dir={self.profile.name}", f"--window-size={WIDTH},{HEIGHT}",
+                 "about:blank"]
+        self.process = subprocess.Popen(
+            ["/bin/bash", "-c", f'exec "$@" 3<&{to_browser_read} 4>&{from_browser_write}',
+             "chromium", chromium, *flags],
+            pass_fds=(to_browser_read, from_browser_write),
+            stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        os.close(to_browser_read)
+        os.close(from_browser_write)
+        self.buffer = b""
+        self.next_id = 0
+        self.events = []
+        self.session = None
+        target = self.call("Target.createTarget", url="about:blank")["targetId"]
+        self.session = self.call("Target.attachToTarget", targetId=target,
+                                 flatten=True)["sessionId"]
+        for domain in ("Page", "Runtime", "Log"):
+            self.call(f"{domain}.enable")
+        self.call("Emulation.setDeviceMetricsOverride", width=WIDTH, height=HEIGHT,
+                  deviceScaleFactor=1, mobile=False)
+
+    def _read_message(self, deadline: float) -> dict:
+        while b"\0" not in self.buffer:
+            if time.monotonic() > deadline:
+                raise TimeoutError("Chromium did not answer in time")
+            if self.process.poll() is not None:
+                raise RuntimeError(f"Chromium exited with {self.process.returncode}")
+            chunk = os.read(self.from_browser, 1 << 16)
+            if not chunk:
+                raise RuntimeError("Chromium closed its pipe")
+            self.buffer += chunk
+        message, self.buffer = self.buffer.split(b"\0", 1)
+        return json.loads(message)
+
+    def call(self, method: str, timeout: float = PAGE_TIMEOUT, **params) -> dict:
+        self.next_id += 1
+        message = {"id": self.next_id, "method": method, "params": params}
+        if self.session and not method.startswith("Target."):
+            message["sessionId"] = self.session
+        os.write(self.to_browser, json.dumps(message).encode() + b"\0")
+        deadline = time.monotonic() + timeout
+        while True:
+            reply = self._read_message(deadline)
+            if reply.get("id") == self.next_id:
+                if "error" in reply:
+                    raise RuntimeError(f"{method}: {reply['error'].get('message')}")
+                return reply.get("result", {})
+            if "method" in reply:
+                self.events.append(reply)
+
+    def wait_for(self, method: str, timeout: float = PAGE_TIMEOUT) -> None:
+        deadline = time.monotonic() + timeout
+        while not any(e["method"] == method for e in self.events):
+            event = self._read_message(deadline)
+            if "method" in event:
+                self.events.append(event)
+
+    def evaluate(self, expression: str):
+        result = self.call("Runtime.evaluate", expression=expression, returnByValue=True,
+                           awaitPromise=True)
+        if "exceptionDetails" in result:
+            raise RuntimeError(f"the check's own script failed: {result['exceptionDetails']}")
+        return result["result"].get("value")
+
+    def close(self) -> None:
+        try:
+            self.call("Browser.close", timeout=5)
+        except (RuntimeError, TimeoutError, OSError):
+            pass
+        try:
+            self.process.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
+        os.close(self.to_browser)
+        os.close(self.from_browser)
+        self.profile.cleanup()
+
+
+def _high_pipe() -> tuple:
+    """A pipe whose two ends are numbered 10 or more."""
+    ends = []
+    for end in os.pipe():
+        ends.append(fcntl.fcntl(end, fcntl.F_DUPFD_CLOEXEC, 10))
+        os.close(end)
+    return tuple(ends)
+
+
+def console_errors(events: list) -> list:
+    """The errors among the DevTools events a page load produced."""
+    errors = []
+    for event in events:
+        params = event.get("params", {})
+        if event["method"] == "Runtime.consoleAPICalled" and params.get("type") == "error":
+            errors.append(" ".join(str(a.get("value", a.get("description", "")))
+                                   for a in params.get("args", [])))
+        elif event["method"] == "Runtime.exceptionThrown":
+            details = params.get("exceptionDetails", {})
+            errors.append(details.get("exception", {}).get("description", details.get("text")))
+        elif event["method"] == "Log.entryAdded" and params["entry"].get("level") == "error":
+            entry = params["entry"]
+            errors.append(f"{entry.get('text')} {entry.get('url', '')}".strip())
+    return errors
+
+
+# What a page reports of itself, once loaded.
+PAGE_FACTS = r"""
+(() => {
+  const skipped = "code, pre, script, style, .katex, .md-search, .md-nav";
+  const raw = [];
+  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+    if (node.parentElement.closest(skipped)) continue;
+    const text = node.textContent;
+    if (text.includes("$") || text.includes("\\(") || text.includes("\\["))
+      raw.push(text.trim().slice(0, 80));
+  }
+  return {
+    images: [...document.images].map(i => ({src: i.currentSrc || i.src, width: i.naturalWidth})),
+    links: [...document.querySelectorAll("a[href]")].map(a => a.href),
+    formulas: document.querySelectorAll(".katex").length,
+    marked: document.querySelectorAll(".arithmatex").length,
+    raw: raw,
+  };
+})()
+"""
+
+
+class Anchors(html.parser.HTMLParser):
+    """The ids and names a page's HTML declares (what a #fragment can name)."""
+
+    def __init__(self):
+        super().__init__()
+        self.found = set()
+
+    def handle_starttag(self, tag, attributes):
+        for key, value in attributes:
+            if key in ("id", "name") and value:
+                self.found.add(value)
+
+
+FENCE = re.compile(r"^( {0,3})(`{3,}|~{3,}).*?^\1\2[ \t]*$", re.S | re.M)
+COMMENT = re.compile(r"<!--.*?-->", re.S)
+CODE_SPAN = re.compile(r"(`+)(?!`).+?(?<!`)\1(?!`)", re.S)
+DISPLAY = re.compile(r"\$\$.+?\$\$", re.S)
+INLINE = re.compile(r"(?<![\\$])\$(?![\s$])(?:\\.|[^\\$\n])+?(?<!\s)\$")
+
+
+def markdown_formulas(text: str) -> int:
+    """How many formulas a page's Markdown holds: $$...$$ blocks and $...$ in
+    prose, code blocks, code spans and HTML comments left out."""
+    text = COMMENT.sub("", FENCE.sub("", text))
+    text = CODE_SPAN.sub("", text)
+    display = len(DISPLAY.findall(text))
+    return display + len(INLINE.findall(DISPLAY.sub("", text)))
+
+
+def serve(folder: pathlib.Path) -> tuple:
+    handler = functools.partial(_QuietHandler, directory=str(folder))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    return server, f"http://127.0.0.1:{server.server_address[1]}/"
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, *args):
+        pass
+
+
+def fetch(url: str) -> tuple:
+    """(status, body) of a URL of the local server."""
+    try:
+        with urllib.request.urlopen(url, timeout=10) as answer:
+            return answer.status, answer.read()
+    except urllib.error.HTTPError as error:
+        return error.code, b""
+
+
+def check_links(links: list, base: str, cache: dict) -> list:
+    problems = []
+    for link in sorted(set(links)):
+        if not link.startswith(base):
+            continue  # outside the site: there is none, and a test must not leave this machine
+        address, _, anchor = link.partition("#")
+        if address not in cache:
+            status, body = fetch(address)
+            anchors = Anchors()
+            if status == 200 and address.endswith((".html", "/")):
+                anchors.feed(body.decode("utf-8", "replace"))
+            cache[address] = (status, anchors.found)
+        status, found = cache[address]
+        if status != 200:
+            problems.append(f"link to {link[len(base):]} answers {status}")
+        elif anchor and urllib.parse.unquote(anchor) not in found:
+            problems.append(f"link to {link[len(base):]}: no element #{anchor} there")
+    return problems
+
+
+def check_search(browser: Browser, base: str) -> list:
+    """Type a word into the search box; a result must come back."""
+    browser.events.clear()
+    browser.call("Page.navigate", url=base + "index.html")
+    browser.wait_for("Page.loadEventFired")
+    browser.evaluate("document.querySelector('.md-search__input').focus()")
+    browser.call("Input.insertText", text="Bresenham")
+    deadline = time.monotonic() + PAGE_TIMEOUT
+    while time.monotonic() < deadline:
+        results = browser.evaluate(
+            "[...document.querySelectorAll('.md-search-result__item')].map(e => e.innerText)")
+        if results:
+            if not any("Bresenham" in r for r in results):
+                return [f"search: 'Bresenham' found only {results[:3]}"]
+            return []
+        time.sleep(0.2)
+    return ["search: no result for 'Bresenham' (is search/search_index.json served?)"]
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("site", type=pathlib.Path, help="the built site (build/site)")
+    parser.add_argument("--docs", type=pathlib.Path,
+                        default=pathlib.Path(__file__).resolve().parent.parent / "docs",
+                        help="the Markdown the site was built from (for the formula counts)")
+    parser.add_argument("--screenshots", type=pathlib.Path,
+                        help="write a PNG of each page here")
+    options = parser.parse_args()
+
+    chromium = shutil.which("chromium") or shutil.which("chromium-browser")
+    if not chromium:
+        print("check_site: skipped, Chromium is not installed (scripts/setup.sh site installs it)")
+        return SKIP
+    if not (options.site / "index.html").is_file():
+        print(f"check_site: error: {options.site} holds no built site (index.html); "
+              "build it with: cmake --build build --target docs_site", file=sys.stderr)
+        return 1
+    if options.screenshots:
+        options.screenshots.mkdir(parents=True, exist_ok=True)
+
+    pages = sorted(p.relative_to(options.site).as_posix() for p in options.site.rglob("*.html"))
+    server, base = serve(options.site)
+    browser = Browser(chromium)
+    failures, cache, formulas = [], {}, 0
+    try:
+        for page in pages:
+            browser.events.clear()
+            browser.call("Page.navigate", url=base + page)
+            browser.wait_for("Page.loadEventFired")
+            facts = browser.evaluate(PAGE_FACTS)
+            problems = [f"console: {e}" for e in console_errors(browser.events)]
+            problems += [f"image {i['src'][len(base):]} did not load" for i in facts["images"]
+                         if i["width"] == 0]
+            problems += check_links(facts["links"], base, cache)
+            problems += [f"formula not typeset: ...{text}..." for text in facts["raw"]]
+            source = options.docs / page.replace(".html", ".md")
+            expected = markdown_formulas(source.read_text()) if source.is_file() else 0
+            if facts["formulas"] != expected or facts["marked"] != expected:
+                problems.append(f"{facts['formulas']} formulas typeset ({facts['marked']} marked "
+                                f"by arithmatex) where {source.name} holds {expected}")
+            formulas += facts["formulas"]
+            if options.screenshots:
+                shot = browser.call("Page.captureScreenshot", format="png")["data"]
+                name = page.replace("/", "_").replace(".html", ".png")
+                (options.screenshots / name).write_bytes(base64.b64decode(shot))
+            print(f"{page}: {len(facts['images'])} images, {len(facts['links'])} links, "
+                  f"{facts['formulas']} formulas" + (f", {len(problems)} problems" if problems else ""))
+            failures += [f"{page}: {p}" for p in problems]
+        failures += check_search(browser, base)
+    finally:
+        browser.close()
+        server.shutdown()
+
+    for failure in failures:
+        print(failure, file=sys.stderr)
+    print(f"check_site: {len(pages)} pages, {formulas} formulas, {len(cache)} link targets; "
+          f"{len(failures)} problems")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
