@@ -13,7 +13,11 @@ A page shows it between two HTML comments, which this script fills:
     ```cpp
     ...code, copied and dedented...
     ```
+    From [common/src/tga.cpp, lines 12–20](../common/src/tga.cpp#L12-L20)
     <!-- /snippet -->
+
+The line under the code links the excerpt to its source lines: the code host
+opens the file there, and the docs site (site/hooks.py) to its own copy of it.
 
 A page can also include a generated file verbatim (the labs' tables):
 
@@ -69,7 +73,8 @@ VALUE = re.compile(
 LANGUAGES = {".cpp": "cpp", ".hpp": "cpp", ".cmake": "cmake", ".py": "python", ".sh": "bash"}
 
 
-def region(path: pathlib.Path, name: str) -> str:
+def region(path: pathlib.Path, name: str) -> tuple:
+    """The region's code, dedented, and its first and last line numbers."""
     lines = path.read_text().splitlines()
     start = end = None
     for number, line in enumerate(lines):
@@ -82,16 +87,18 @@ def region(path: pathlib.Path, name: str) -> str:
     if start is None or end is None or end <= start:
         raise LookupError(f"{path.relative_to(ROOT)} has no complete region [doc:{name}]")
     body = [line for line in lines[start + 1 : end] if not MARKER.match(line)]
-    return textwrap.dedent("\n".join(body)).strip("\n") + "\n"
+    return textwrap.dedent("\n".join(body)).strip("\n") + "\n", start + 2, end
 
 
 def rendered(match: re.Match) -> str:
     source = ROOT / match.group("file")
     if not source.is_file():
         raise LookupError(f"no source file {match.group('file')}")
-    code = region(source, match.group("region"))
+    code, first, last = region(source, match.group("region"))
     language = LANGUAGES.get(source.suffix, "")
-    return f"{match.group(1)}```{language}\n{code}```\n{match.group(5)}"
+    file = match.group("file")
+    link = f"From [{file}, lines {first}–{last}](../{file}#L{first}-L{last})\n"
+    return f"{match.group(1)}```{language}\n{code}```\n{link}{match.group(5)}"
 
 
 def included(match: re.Match) -> str:
