@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Reads every page of the built docs site in headless Chromium, as a reader would.
 
-    site/check_site.py SITE_DIR [--docs docs] [--screenshots DIR]
+    site/check_site.py SITE_DIR [--docs docs] [--screenshots DIR] [--pages PAGE ...]
 
 It serves SITE_DIR from http.server on 127.0.0.1 (a free port) and opens
 every HTML page in Chromium, driven over the DevTools protocol on a pipe
@@ -16,8 +16,11 @@ that
 - every link inside the site reaches a file the server answers with 200, and
   its #anchor names an element of that page;
 - every formula was typeset: no `$`, `\\(` or `\\[` is left in the page's text
-  outside code, and the count of KaTeX's formulas equals the count of
-  formulas in the page's Markdown (docs/NAME.md), counted here on their own;
+  outside code, the count of KaTeX's formulas equals the count of formulas in
+  the page's Markdown (docs/NAME.md), counted here on their own, and KaTeX's
+  stylesheet applies to them;
+- no Markdown table is left as text (a table inside HTML that the Markdown
+  reader did not enter);
 
 and that the search box finds a lesson by a word of its text. A screenshot of
 each page goes to the screenshots folder. Exit 0 when every check holds, 1
@@ -172,20 +175,26 @@ def console_errors(events: list) -> list:
 PAGE_FACTS = r"""
 (() => {
   const skipped = "code, pre, script, style, .katex, .md-search, .md-nav";
-  const raw = [];
+  const raw = [], tables = [];
   const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
   for (let node = walker.nextNode(); node; node = walker.nextNode()) {
     if (node.parentElement.closest(skipped)) continue;
     const text = node.textContent;
     if (text.includes("$") || text.includes("\\(") || text.includes("\\["))
       raw.push(text.trim().slice(0, 80));
+    if (/\|\s*-{3}/.test(text)) tables.push(text.trim().slice(0, 80));
   }
   return {
     images: [...document.images].map(i => ({src: i.currentSrc || i.src, width: i.naturalWidth})),
     links: [...document.querySelectorAll("a[href]")].map(a => a.href),
     formulas: document.querySelectorAll(".katex").length,
+    // KaTeX's stylesheet hides the MathML copy of each formula; without it
+    // every formula shows twice.
+    unstyled: [...document.querySelectorAll(".katex-mathml")].filter(
+        e => getComputedStyle(e).position !== "absolute").length,
     marked: document.querySelectorAll(".arithmatex").length,
     raw: raw,
+    tables: tables,
   };
 })()
 """
@@ -266,18 +275,32 @@ def check_search(browser: Browser, base: str) -> list:
     browser.events.clear()
     browser.call("Page.navigate", url=base + "index.html")
     browser.wait_for("Page.loadEventFired")
-    browser.evaluate("document.querySelector('.md-search__input').focus()")
-    browser.call("Input.insertText", text="Bresenham")
+    # The theme's search worker reads the index after the page loads, and
+    # ignores what is typed before it is ready.
     deadline = time.monotonic() + PAGE_TIMEOUT
-    while time.monotonic() < deadline:
-        results = browser.evaluate(
-            "[...document.querySelectorAll('.md-search-result__item')].map(e => e.innerText)")
-        if results:
-            if not any("Bresenham" in r for r in results):
-                return [f"search: 'Bresenham' found only {results[:3]}"]
-            return []
+    while "Initializing" in (browser.evaluate(
+            "document.querySelector('.md-search-result__meta').innerText") or ""):
+        if time.monotonic() > deadline:
+            return ["search: the search index never finished loading"]
         time.sleep(0.2)
-    return ["search: no result for 'Bresenham' (is search/search_index.json served?)"]
+    browser.evaluate("document.querySelector('.md-search__input').focus()")
+    for key in "Bresenham":  # typed key by key: the theme searches on key-up
+        browser.call("Input.dispatchKeyEvent", type="keyDown", key=key, text=key)
+        browser.call("Input.dispatchKeyEvent", type="keyUp", key=key)
+    # The box reports the search's end in its meta line ("7 matching
+    # documents", "No matching documents").
+    meta = "Type to start searching"
+    deadline = time.monotonic() + PAGE_TIMEOUT
+    while "matching" not in meta.lower() and time.monotonic() < deadline:
+        time.sleep(0.2)
+        meta = browser.evaluate("document.querySelector('.md-search-result__meta').innerText")
+    results = browser.evaluate(
+        "[...document.querySelectorAll('.md-search-result__item')].map(e => e.innerText)")
+    if not results:
+        return [f"search: no result for 'Bresenham' (the box says: {meta.strip()!r})"]
+    if not any("Bresenham" in r for r in results):
+        return [f"search: 'Bresenham' found only {results[:3]}"]
+    return []
 
 
 def main() -> int:
@@ -288,6 +311,8 @@ def main() -> int:
                         help="the Markdown the site was built from (for the formula counts)")
     parser.add_argument("--screenshots", type=pathlib.Path,
                         help="write a PNG of each page here")
+    parser.add_argument("--pages", nargs="+", metavar="PAGE",
+                        help="check only these pages (paths in the site), and search")
     options = parser.parse_args()
 
     chromium = shutil.which("chromium") or shutil.which("chromium-browser")
@@ -301,7 +326,8 @@ def main() -> int:
     if options.screenshots:
         options.screenshots.mkdir(parents=True, exist_ok=True)
 
-    pages = sorted(p.relative_to(options.site).as_posix() for p in options.site.rglob("*.html"))
+    pages = options.pages or sorted(p.relative_to(options.site).as_posix()
+                                    for p in options.site.rglob("*.html"))
     server, base = serve(options.site)
     browser = Browser(chromium)
     failures, cache, formulas = [], {}, 0
@@ -316,6 +342,9 @@ def main() -> int:
                          if i["width"] == 0]
             problems += check_links(facts["links"], base, cache)
             problems += [f"formula not typeset: ...{text}..." for text in facts["raw"]]
+            problems += [f"a Markdown table left as text: {text}..." for text in facts["tables"]]
+            if facts["unstyled"]:
+                problems.append(f"{facts['unstyled']} formulas without KaTeX's stylesheet")
             source = options.docs / page.replace(".html", ".md")
             expected = markdown_formulas(source.read_text()) if source.is_file() else 0
             if facts["formulas"] != expected or facts["marked"] != expected:

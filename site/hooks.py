@@ -22,6 +22,7 @@ import re
 import shutil
 import tempfile
 
+from mkdocs.exceptions import PluginError
 from mkdocs.structure.files import File
 from pygments import highlight
 from pygments.formatters import HtmlFormatter
@@ -48,7 +49,7 @@ def _outside_targets(docs_dir: pathlib.Path) -> dict:
         for match in OUTSIDE_LINK.finditer(page.read_text()):
             path = match.group("path")
             if not (ROOT / path).is_file():
-                raise FileNotFoundError(f"{page.name} links to ../{path}, which is not a file")
+                raise PluginError(f"{page.name} links to ../{path}, which is not a file")
             targets.setdefault(path, []).append(page.name)
     return targets
 
@@ -77,6 +78,13 @@ def _code_page(path: str, pages: list) -> str:
             f"line by line.\n\n<div class=\"source-file\" markdown=\"0\">{code}</div>\n")
 
 
+def _site_name(path: str) -> str:
+    """Where a file from outside docs/ goes in the docs: an image or a Markdown
+    page as it is, any other file as a page that shows it."""
+    suffix = pathlib.PurePosixPath(path).suffix.lower()
+    return f"{SOURCE}/{path}" if suffix in IMAGES or suffix == ".md" else f"{SOURCE}/{path}.md"
+
+
 def on_files(files, config):
     global _generated
     docs_dir = pathlib.Path(config["docs_dir"])
@@ -90,24 +98,23 @@ def on_files(files, config):
     _quoted_by.clear()
     _quoted_by.update(_outside_targets(docs_dir))
     for path, pages in _quoted_by.items():
-        if pathlib.PurePosixPath(path).suffix.lower() in IMAGES:
-            name = f"{SOURCE}/{path}"
-            (generated / name).parent.mkdir(parents=True, exist_ok=True)
+        suffix = pathlib.PurePosixPath(path).suffix.lower()
+        name = _site_name(path)
+        (generated / name).parent.mkdir(parents=True, exist_ok=True)
+        if suffix in IMAGES:
             shutil.copyfile(ROOT / path, generated / name)
-        elif path.endswith(".md"):
-            name = f"{SOURCE}/{path}"
-            (generated / name).parent.mkdir(parents=True, exist_ok=True)
+        elif suffix == ".md":  # a Markdown file is a page as it is
             (generated / name).write_text((ROOT / path).read_text())
         else:
-            name = f"{SOURCE}/{path}.md"
-            (generated / name).parent.mkdir(parents=True, exist_ok=True)
             (generated / name).write_text(_code_page(path, pages))
         files.append(File(name, str(generated), config["site_dir"], config["use_directory_urls"]))
 
-    for path in ["katex.min.js", "katex.min.css", "contrib/auto-render.min.js"]:
-        if (KATEX / path).is_file():
-            files.append(File(f"katex/{path}", str(KATEX.parent), config["site_dir"],
-                              config["use_directory_urls"]))
+    if not (KATEX / "katex.min.js").is_file():
+        raise PluginError(f"KaTeX is not installed ({KATEX}): scripts/setup.sh site installs "
+                          "libjs-katex")
+    for path in ["katex.min.js", "katex.min.css"]:
+        files.append(File(f"katex/{path}", str(KATEX.parent), config["site_dir"],
+                          config["use_directory_urls"]))
     for font in sorted((KATEX / "fonts").iterdir()):
         files.append(File(f"katex/fonts/{font.name}", str(KATEX.parent), config["site_dir"],
                           config["use_directory_urls"]))
@@ -122,9 +129,7 @@ def _site_target(match: re.Match, page_dir: str) -> str:
     lines = LINE_RANGE.match(anchor)
     if lines:
         anchor = f"#L{lines.group(1)}"
-    suffix = pathlib.PurePosixPath(path).suffix.lower()
-    name = f"{SOURCE}/{path}" if suffix in IMAGES or suffix == ".md" else f"{SOURCE}/{path}.md"
-    return f"]({posixpath.relpath(name, page_dir or '.')}{anchor})"
+    return f"]({posixpath.relpath(_site_name(path), page_dir or '.')}{anchor})"
 
 
 def on_page_markdown(markdown, page, config, files):

@@ -1,0 +1,89 @@
+#!/usr/bin/env python3
+"""The site's browser check itself (site/check_site.py) must fail on each
+breakage it claims to catch. It is run on a copy of the built site with one
+breakage per page: a missing image, a link to an anchor that is not there, a
+formula KaTeX cannot read, a formula left untypeset, and a search index that
+has lost a word. Each must be named in the check's report, and the check must exit 1.
+
+    tests/scripts/check_site_selftest.py SITE_DIR
+"""
+import json
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+CHECK = pathlib.Path(__file__).resolve().parents[2] / "site" / "check_site.py"
+SKIP = 77
+BROKEN_PAGES = ["01_lines.html", "02_triangles.html", "03_zbuffer.html", "04_textures.html"]
+
+
+def first_formula(page: pathlib.Path) -> re.Match:
+    match = re.search(r'<span class="arithmatex">(.*?)</span>', page.read_text(), re.S)
+    if not match:
+        sys.exit(f"check_site_selftest: {page.name} has no inline formula to break")
+    return match
+
+
+def break_site(site: pathlib.Path) -> list:
+    """Breaks the copy; returns what the report must say of each breakage."""
+    expected = []
+    # An image that is gone: the picture does not load, and the browser says so.
+    (site / "images" / "01_lines.png").unlink()
+    expected += ["01_lines.html: image images/01_lines.png did not load",
+                 "01_lines.html: console: Failed to load resource"]
+    # A link to a heading that does not exist.
+    page = site / "02_triangles.html"
+    page.write_text(page.read_text().replace(
+        "</article>", '<a href="03_zbuffer.html#no-such-heading">gone</a></article>', 1))
+    expected.append("02_triangles.html: link to 03_zbuffer.html#no-such-heading: "
+                    "no element #no-such-heading")
+    # A formula KaTeX cannot read: a console error names it.
+    page = site / "03_zbuffer.html"
+    match = first_formula(page)
+    text = page.read_text()
+    page.write_text(text[:match.start(1)] + r"\(\frac{1}{\)" + text[match.end(1):])
+    expected.append('03_zbuffer.html: console: KaTeX cannot typeset "\\frac{1}{"')
+    # A formula the page leaves as raw TeX (not marked for the typesetter).
+    page = site / "04_textures.html"
+    match = first_formula(page)
+    text = page.read_text()
+    page.write_text(text[:match.start()] + "<span>" + match.group(1) + "</span>"
+                    + text[match.end():])
+    expected += ["04_textures.html: formula not typeset", "where 04_textures.md holds"]
+    # A search index that has lost a word finds nothing for it.
+    index = site / "search" / "search_index.json"
+    entries = json.loads(index.read_text())
+    for entry in entries["docs"]:
+        for key in ("title", "text"):
+            entry[key] = re.sub("bresenham", "a line method", entry[key], flags=re.I)
+    index.write_text(json.dumps(entries))
+    expected.append("search: no result for 'Bresenham'")
+    return expected
+
+
+def main() -> int:
+    site = pathlib.Path(sys.argv[1])
+    with tempfile.TemporaryDirectory() as folder:
+        copy = pathlib.Path(folder) / "site"
+        shutil.copytree(site, copy)
+        expected = break_site(copy)
+        run = subprocess.run([sys.executable, str(CHECK), str(copy), "--pages", *BROKEN_PAGES],
+                             capture_output=True, text=True)
+    if run.returncode == SKIP:
+        print(run.stdout.strip())
+        return SKIP
+    report = run.stdout + run.stderr
+    missing = [line for line in expected if line not in report]
+    if run.returncode != 1 or missing:
+        print(report)
+        print(f"check_site_selftest: exit {run.returncode} (want 1); not reported: {missing}")
+        return 1
+    print(f"check_site_selftest: all {len(expected)} breakages reported")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
