@@ -19,6 +19,7 @@ that
   outside code, the count of KaTeX's formulas equals the count of formulas in
   the page's Markdown (docs/NAME.md), counted here on their own, and KaTeX's
   stylesheet applies to them;
+- a lesson's page links to the previous and the next page;
 - no Markdown table is left as text (a table inside HTML that the Markdown
   reader did not enter);
 
@@ -195,6 +196,8 @@ PAGE_FACTS = r"""
     marked: document.querySelectorAll(".arithmatex").length,
     raw: raw,
     tables: tables,
+    previous: !!document.querySelector("a.md-footer__link--prev"),
+    next: !!document.querySelector("a.md-footer__link--next"),
   };
 })()
 """
@@ -343,6 +346,8 @@ def main() -> int:
             problems += check_links(facts["links"], base, cache)
             problems += [f"formula not typeset: ...{text}..." for text in facts["raw"]]
             problems += [f"a Markdown table left as text: {text}..." for text in facts["tables"]]
+            if re.match(r"\d\d_", page) and not (facts["previous"] and facts["next"]):
+                problems.append("a lesson without its previous and next links")
             if facts["unstyled"]:
                 problems.append(f"{facts['unstyled']} formulas without KaTeX's stylesheet")
             source = options.docs / page.replace(".html", ".md")

@@ -12,6 +12,8 @@ site has none of that, so these hooks
 - serve KaTeX from Debian's libjs-katex and the script that typesets with it
   (site/typeset.js), so nothing is fetched from the network when a page is
   read;
+- refuse a nav that leaves out a lesson's page or lists the lessons out of
+  order;
 - leave out what is not a page: docs/CMakeLists.txt, and the lab tables of
   docs/charts/*.md, which each page already includes where it refers to them.
 """
@@ -122,6 +124,18 @@ def on_files(files, config):
         files.append(File(name, str(ROOT / "site"), config["site_dir"],
                           config["use_directory_urls"]))
     return files
+
+
+def on_nav(nav, config, files):
+    """Every lesson page is in mkdocs.yml's nav, in the order of its number:
+    a new lesson's page cannot be left out of the site's navigation."""
+    lessons = sorted(p.name for p in pathlib.Path(config["docs_dir"]).glob("[0-9][0-9]_*.md"))
+    listed = [page.file.src_uri for page in nav.pages if re.match(r"\d\d_", page.file.src_uri)]
+    if listed != lessons:
+        missing = sorted(set(lessons) - set(listed))
+        raise PluginError("mkdocs.yml's nav must list every lesson page in order: "
+                          + (f"{', '.join(missing)} missing" if missing else f"it has {listed}"))
+    return nav
 
 
 def _site_target(match: re.Match, page_dir: str) -> str:
