@@ -97,7 +97,8 @@ def rendered(match: re.Match) -> str:
     code, first, last = region(source, match.group("region"))
     language = LANGUAGES.get(source.suffix, "")
     file = match.group("file")
-    link = f"From [{file}, lines {first}–{last}](../{file}#L{first}-L{last})\n"
+    lines = f"line {first}" if first == last else f"lines {first}–{last}"
+    link = f"From [{file}, {lines}](../{file}#L{first}-L{last})\n"
     return f"{match.group(1)}```{language}\n{code}```\n{link}{match.group(5)}"
 
 

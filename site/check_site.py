@@ -19,6 +19,7 @@ that
   outside code, the count of KaTeX's formulas equals the count of formulas in
   the page's Markdown (docs/NAME.md), counted here on their own, and KaTeX's
   stylesheet applies to them;
+- no display formula is wider than the page's column (it would need scrolling);
 - a lesson's page links to the previous and the next page;
 - no Markdown table is left as text (a table inside HTML that the Markdown
   reader did not enter);
@@ -196,6 +197,9 @@ PAGE_FACTS = r"""
     marked: document.querySelectorAll(".arithmatex").length,
     raw: raw,
     tables: tables,
+    // A display formula grows to its width; the block around it scrolls.
+    wide: [...document.querySelectorAll("div.arithmatex")].filter(
+        e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent.slice(0, 60)),
     previous: !!document.querySelector("a.md-footer__link--prev"),
     next: !!document.querySelector("a.md-footer__link--next"),
   };
@@ -346,6 +350,8 @@ def main() -> int:
             problems += check_links(facts["links"], base, cache)
             problems += [f"formula not typeset: ...{text}..." for text in facts["raw"]]
             problems += [f"a Markdown table left as text: {text}..." for text in facts["tables"]]
+            problems += [f"a display formula wider than the page's column ({WIDTH} px "
+                         f"window): {text}..." for text in facts["wide"]]
             if re.match(r"\d\d_", page) and not (facts["previous"] and facts["next"]):
                 problems.append("a lesson without its previous and next links")
             if facts["unstyled"]:

@@ -23,7 +23,7 @@ with tempfile.TemporaryDirectory() as tmp:
     assert run(root, "--fill") == 0
     assert "int b = 1;" in page.read_text(), page.read_text()
     # ...with a link to the region's lines under the code.
-    assert "From [src.cpp, lines 3–3](../src.cpp#L3-L3)\n<!-- /snippet -->" in page.read_text()
+    assert "From [src.cpp, line 3](../src.cpp#L3-L3)\n<!-- /snippet -->" in page.read_text()
     assert run(root) == 0, "a filled snippet failed the check"
     # The same code moved down a line: the link's line numbers are stale.
     source = (root / "src.cpp").read_text()
@@ -42,7 +42,7 @@ with tempfile.TemporaryDirectory() as tmp:
     (root / "docs" / "charts" / "t.md").write_text(
         "| method | scene | ns |\n|---|---|---|\n| a | big (1 px) | 12.5 |\n| b | big (1 px) | 99 |\n")
     shown = ("<!-- snippet: src.cpp#part -->\n```cpp\nint b = 1;\n```\n"
-             "From [src.cpp, lines 3–3](../src.cpp#L3-L3)\n<!-- /snippet -->\n")
+             "From [src.cpp, line 3](../src.cpp#L3-L3)\n<!-- /snippet -->\n")
     stale = "takes <!-- value: docs/charts/t.md | method=a | scene=big (1 px) | ns -->11<!-- /value --> ns\n"
     page.write_text(shown + stale)
     assert run(root) == 1, "a stale value passed the check"
