@@ -335,7 +335,22 @@ def main() -> int:
 
     pages = options.pages or sorted(p.relative_to(options.site).as_posix()
                                     for p in options.site.rglob("*.html"))
+    absent = [page for page in pages if not (options.site / page).is_file()]
+    if absent:
+        print(f"check_site: error: no page {', '.join(absent)} in {options.site}", file=sys.stderr)
+        return 1
     server, base = serve(options.site)
+    try:
+        return check_pages(options, pages, chromium, base)
+    except (RuntimeError, TimeoutError, OSError) as error:
+        print(f"check_site: error: {error}", file=sys.stderr)
+        return 1
+    finally:
+        server.shutdown()
+
+
+def check_pages(options, pages: list, chromium: str, base: str) -> int:
+    """Every page, then search; prints the problems, returns the exit code."""
     browser = Browser(chromium)
     failures, cache, formulas = [], {}, 0
     try:
@@ -372,7 +387,6 @@ def main() -> int:
         failures += check_search(browser, base)
     finally:
         browser.close()
-        server.shutdown()
 
     for failure in failures:
         print(failure, file=sys.stderr)

@@ -17,7 +17,6 @@ site has none of that, so these hooks
 - leave out what is not a page: docs/CMakeLists.txt, and the lab tables of
   docs/charts/*.md, which each page already includes where it refers to them.
 """
-import os
 import pathlib
 import posixpath
 import re
@@ -41,7 +40,6 @@ OUTSIDE_LINK = re.compile(r"\]\(\.\./(?P<path>[^)\s#]+)(?P<anchor>#[^)\s]*)?\)")
 LINE_RANGE = re.compile(r"^#L(\d+)(-L\d+)?$")
 
 _generated = None  # the folder the generated pages live in during a build
-_quoted_by = {}  # source path -> the pages that link to it
 
 
 def _outside_targets(docs_dir: pathlib.Path) -> dict:
@@ -97,9 +95,7 @@ def on_files(files, config):
 
     _generated = tempfile.TemporaryDirectory(prefix="rasterlab-site-")
     generated = pathlib.Path(_generated.name)
-    _quoted_by.clear()
-    _quoted_by.update(_outside_targets(docs_dir))
-    for path, pages in _quoted_by.items():
+    for path, pages in _outside_targets(docs_dir).items():
         suffix = pathlib.PurePosixPath(path).suffix.lower()
         name = _site_name(path)
         (generated / name).parent.mkdir(parents=True, exist_ok=True)
