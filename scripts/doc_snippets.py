@@ -91,12 +91,12 @@ def region(path: pathlib.Path, name: str) -> tuple:
 
 
 def rendered(match: re.Match) -> str:
-    source = ROOT / match.group("file")
+    file = match.group("file")
+    source = ROOT / file
     if not source.is_file():
-        raise LookupError(f"no source file {match.group('file')}")
+        raise LookupError(f"no source file {file}")
     code, first, last = region(source, match.group("region"))
     language = LANGUAGES.get(source.suffix, "")
-    file = match.group("file")
     lines = f"line {first}" if first == last else f"lines {first}–{last}"
     link = f"From [{file}, {lines}](../{file}#L{first}-L{last})\n"
     return f"{match.group(1)}```{language}\n{code}```\n{link}{match.group(5)}"
