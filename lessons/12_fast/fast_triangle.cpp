@@ -1,6 +1,7 @@
 #include "fast_triangle.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace fast {
 
@@ -34,15 +35,28 @@ bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, F
     }
     // [/doc:edges]
     o.inverse_area = 1.0f / static_cast<float>(f.area);
-    // The snapped order: lesson 02 swapped vertices 1 and 2 to make it
-    // counter-clockwise; weight k of the edges belongs to input vertex order[k].
-    const int order[3] = {0, f.swapped ? 2 : 1, f.swapped ? 1 : 2};
+    // The weights come out in input order, as lesson 02's in_input_order
+    // gives them, and every sum over the vertices runs in lesson 05's order:
+    // float sums depend on their order, and a texel picked by `nearest`
+    // flips on the last bit of a coordinate.
+    o.swapped = f.swapped;
+    // |E_k| at any centre of the frame is at most |dx| |y - y_k| + |dy| |x - x_k|.
+    double most = 0;
+    const double fw = (static_cast<double>(width) + 1) * triangles::kSubpixels;
+    const double fh = (static_cast<double>(height) + 1) * triangles::kSubpixels;
     for (int k = 0; k < 3; ++k) {
-        const int i = order[k];
-        o.z[k] = t.window[i].z;
-        o.inverse_w[k] = t.inverse_w[i];
+        const double ex = static_cast<double>(o.edge_x[k]), ey = static_cast<double>(o.edge_y[k]);
+        most = std::max(most, std::abs(static_cast<double>(o.edge_dx[k])) *
+                                      std::max(std::abs(ey), std::abs(fh - ey)) +
+                                  std::abs(static_cast<double>(o.edge_dy[k])) *
+                                      std::max(std::abs(ex), std::abs(fw - ex)));
+    }
+    o.edges_fit_double = most < 0x1p52;
+    for (int i = 0; i < 3; ++i) {
+        o.z[i] = t.window[i].z;
+        o.inverse_w[i] = t.inverse_w[i];
         const auto& lanes = std::bit_cast<perspective::Lanes<Varyings>>(t.over_w[i]);
-        std::copy(lanes.begin(), lanes.end(), o.over_w[k]);
+        std::copy(lanes.begin(), lanes.end(), o.over_w[i]);
     }
     o.z_min = std::min({o.z[0], o.z[1], o.z[2]});
     o.z_max = std::max({o.z[0], o.z[1], o.z[2]});

@@ -28,8 +28,10 @@ struct FastTriangle {
     // for all three (threshold -1 on a top-left edge: E >= 0; else 0: E > 0).
     std::int64_t edge_x[3], edge_y[3], edge_dx[3], edge_dy[3], threshold[3];
     float inverse_area;        // 1 / (2 area) in the same units: weight b_k = E_k * inverse_area
+    bool swapped;              // lesson 02 swapped vertices 1 and 2: edge 1 is opposite vertex 2
+    bool edges_fit_double;     // |E_k| < 2^53 over the frame: exact when stepped in double
     int x0, y0, x1, y1;        // the pixel centres of its box, inclusive, within the frame
-    float z[3], z_min, z_max;  // window depth at the vertices (in snapped order)
+    float z[3], z_min, z_max;  // window depth at the vertices (in input order, as lesson 05's)
     float inverse_w[3];        // 1 / w
     float over_w[3][kVaryingFloats];  // varyings / w
     float d_uv_over_w[2][2];          // d(uv / w)/dx, d(uv / w)/dy  (u then v)

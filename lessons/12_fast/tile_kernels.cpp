@@ -128,26 +128,69 @@ HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, b
     return coverage;
 }
 
-// The barycentric weights over one block: b_k = E_k * inverse_area, exact at
-// the block's origin (the integers of lesson 02), then stepped by slot.
+// The barycentric weights as lesson 02 computes them, b_k = float(E_k) *
+// inverse_area with E_k the exact integer at the pixel centre, in input
+// order: the weights, the depth and the texture coordinates are then lesson
+// 07's to the last bit, and a `nearest` lookup picks lesson 07's texel.
+// E_k is stepped from an origin pixel in double, exact while |E_k| < 2^53
+// (FastTriangle::edges_fit_double); beyond that, lane by lane in integers.
 struct BlockWeights {
-    float origin[3], dx[3], dy[3];
+    std::int64_t origin[3], dx[3], dy[3];  // E_k at the origin; per pixel right, per pixel up
 };
 HWY_INLINE BlockWeights block_weights(const FastTriangle& t, int ox, int oy) {
     BlockWeights w;
     for (int k = 0; k < 3; ++k) {
-        w.origin[k] = static_cast<float>(t.edge_at(k, ox, oy)) * t.inverse_area;
-        w.dx[k] = static_cast<float>(-t.edge_dy[k] * triangles::kSubpixels) * t.inverse_area;
-        w.dy[k] = static_cast<float>(t.edge_dx[k] * triangles::kSubpixels) * t.inverse_area;
+        w.origin[k] = t.edge_at(k, ox, oy);
+        w.dx[k] = -t.edge_dy[k] * triangles::kSubpixels;
+        w.dy[k] = t.edge_dx[k] * triangles::kSubpixels;
     }
     return w;
 }
-HWY_INLINE void weights_at(DF df, const BlockWeights& w, int first, VF (&b)[3]) {
+// E at `column`, `row` pixels from the origin, rounded once to float.
+HWY_INLINE VF edge_values(DF df, const FastTriangle& t, const BlockWeights& w, int k, VF column,
+                          VF row) {
+#if HWY_TARGET != HWY_SCALAR
+    if (t.edges_fit_double) {
+        const hn::Half<DF> dh;
+        const hn::Repartition<double, DF> dd;
+        const auto origin = hn::Set(dd, static_cast<double>(w.origin[k]));
+        const auto dx = hn::Set(dd, static_cast<double>(w.dx[k]));
+        const auto dy = hn::Set(dd, static_cast<double>(w.dy[k]));
+        // Every product and sum is an integer below 2^53: exact, fused or not.
+        const auto at = [&](auto columns, auto rows) {
+            return hn::DemoteTo(dh, hn::MulAdd(hn::PromoteTo(dd, rows), dy,
+                                               hn::MulAdd(hn::PromoteTo(dd, columns), dx, origin)));
+        };
+        return hn::Combine(df, at(hn::UpperHalf(dh, column), hn::UpperHalf(dh, row)),
+                           at(hn::LowerHalf(dh, column), hn::LowerHalf(dh, row)));
+    }
+#else
+    (void)t;
+#endif
+    alignas(64) float columns[hn::MaxLanes(df)], rows[hn::MaxLanes(df)], out[hn::MaxLanes(df)];
+    hn::Store(column, df, columns);
+    hn::Store(row, df, rows);
+    for (std::size_t lane = 0; lane < hn::Lanes(df); ++lane)
+        out[lane] =
+            static_cast<float>(w.origin[k] + static_cast<std::int64_t>(columns[lane]) * w.dx[k] +
+                               static_cast<std::int64_t>(rows[lane]) * w.dy[k]);
+    return hn::Load(df, out);
+}
+// The weights at `column`, `row` pixels from the origin, in input order.
+HWY_INLINE void weights_at(DF df, const FastTriangle& t, const BlockWeights& w, VF column, VF row,
+                           VF (&b)[3]) {
+    const VF inverse_area = hn::Set(df, t.inverse_area);
+    VF e[3];
+    for (int k = 0; k < 3; ++k) e[k] = hn::Mul(edge_values(df, t, w, k, column, row), inverse_area);
+    b[0] = e[0];
+    b[1] = t.swapped ? e[2] : e[1];
+    b[2] = t.swapped ? e[1] : e[2];
+}
+// The weights of a block's slots [first, first + N).
+HWY_INLINE void weights_at(DF df, const FastTriangle& t, const BlockWeights& w, int first,
+                           VF (&b)[3]) {
     const SlotTables& s = slots();
-    const VF column = hn::Load(df, s.column + first), row = hn::Load(df, s.row + first);
-    for (int k = 0; k < 3; ++k)
-        b[k] = hn::MulAdd(row, hn::Set(df, w.dy[k]),
-                          hn::MulAdd(column, hn::Set(df, w.dx[k]), hn::Set(df, w.origin[k])));
+    weights_at(df, t, w, hn::Load(df, s.column + first), hn::Load(df, s.row + first), b);
 }
 
 // The blocks of a triangle's box within the tile, as block indices.
@@ -205,7 +248,7 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                     const MF covered = mask_of(df, coverage, first);
                     if (hn::AllFalse(df, covered)) continue;
                     VF b[3];
-                    weights_at(df, w, first, b);
+                    weights_at(df, t, w, first, b);
                     // Lesson 03's interpolate_depth: linear in the weights,
                     // clamped to the vertices' range.
                     VF z = hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.z[0])),
@@ -641,7 +684,7 @@ void shade_by_chunks(const TileWork& work, TileBuffers& buffers, const FastTrian
                 const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
                 if (hn::AllFalse(du, mine)) continue;
                 VF b[3];
-                weights_at(df, w, first, b);
+                weights_at(df, t, w, first, b);
                 const VU rgba = shade(df, work.materials[t.model], t, b);
                 counts.shaded += hn::CountTrue(du, mine);
                 counts.lanes += n;
@@ -678,15 +721,13 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
             shade_by_chunks(work, buffers, t, index, counts);
             continue;
         }
-        // The weights, exact at the tile's first pixel, stepped from there.
+        // The weights, stepped exactly from the tile's first pixel.
         const BlockWeights w = block_weights(t, work.x0, work.y0);
         std::size_t queued = 0;
         const auto shade_queued = [&](std::size_t count) {
             const VF x = hn::Load(df, queue_x), y = hn::Load(df, queue_y);
             VF b[3];
-            for (int k = 0; k < 3; ++k)
-                b[k] = hn::MulAdd(y, hn::Set(df, w.dy[k]),
-                                  hn::MulAdd(x, hn::Set(df, w.dx[k]), hn::Set(df, w.origin[k])));
+            weights_at(df, t, w, x, y, b);
             hn::Store(shade(df, material, t, b), du, shaded);
             for (std::size_t lane = 0; lane < count; ++lane)
                 colour[queue_slot[lane]] = shaded[lane];
