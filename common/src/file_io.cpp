@@ -169,11 +169,19 @@ bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
     const bool a_exists = ::stat(a.c_str(), &x) == 0, b_exists = ::stat(b.c_str(), &y) == 0;
     if (a_exists && b_exists) return x.st_dev == y.st_dev && x.st_ino == y.st_ino;
     if (a_exists != b_exists) return false;
+    // Neither exists yet: where a write would land, through links that point
+    // at a file not yet made (ln -s f.tga l.tga: -o f.tga and -o l.tga are one file).
+    const auto landing = [](const std::filesystem::path& p, std::error_code& ec) {
+        std::filesystem::path target;
+        try {
+            target = resolve_output(p);
+        } catch (const FileError&) {
+            target = p;  // a loop: check_output() refuses it
+        }
+        return std::filesystem::weakly_canonical(std::filesystem::absolute(target), ec);
+    };
     std::error_code ec_a, ec_b;
-    const std::filesystem::path ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a),
-                                                                       ec_a),
-                                cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b),
-                                                                       ec_b);
+    const std::filesystem::path ca = landing(a, ec_a), cb = landing(b, ec_b);
     return !ec_a && !ec_b && ca == cb;
 }
 

@@ -237,6 +237,26 @@ TEST(FileIo, TwoOutputsCannotNameTheSameFile) {
     rl::forget_inputs();
 }
 
+// A link to a file that does not exist yet is that file: `ln -s f.tga
+// l.tga; 03_zbuffer -o f.tga --depth-out l.tga` would write both images to
+// f.tga and keep one. Also through a chain of links, and staged without check.
+TEST(FileIo, ALinkToAFileNotYetMadeIsThatFile) {
+    rl_test::TempDir dir;
+    const auto file = dir.path() / "f.tga", link = dir.path() / "l.tga",
+               chain = dir.path() / "chain.tga";
+    std::filesystem::create_symlink("f.tga", link);  // dangling, relative
+    std::filesystem::create_symlink(link, chain);
+    EXPECT_TRUE(rl::same_file(file, link));
+    EXPECT_TRUE(rl::same_file(chain, file));
+    EXPECT_FALSE(rl::same_file(file, dir.path() / "g.tga"));
+    rl::OutputFiles out;
+    out.check(file);
+    EXPECT_THROW(out.check(link), rl::FileError);
+    rl::OutputFiles staged;
+    staged.stage(chain, std::vector<std::uint8_t>{1});
+    EXPECT_THROW(staged.stage(file, std::vector<std::uint8_t>{2}), rl::FileError);
+}
+
 TEST(FileIoDeathTest, AKilledWriteLeavesNoTemporary) {
     rl_test::TempDir dir;
     const auto path = dir.path() / "out.tga";
