@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include "07_normal_mapping/mapped_cli.hpp"
@@ -43,22 +44,34 @@ int main(int argc, char** argv) {
                    "Tile side in pixels (8 to 1024, a multiple of 8)")
         ->capture_default_str()
         ->check(CLI::Range(8, 1024));
-    app.add_flag("!--no-peer", peer, "Do not time Mesa's llvmpipe on the same frames");
+    CLI::Option* no_peer =
+        app.add_flag("!--no-peer", peer, "Do not time Mesa's llvmpipe on the same frames");
     std::string peer_output;
-    app.add_option("--peer-output", peer_output, "Also write llvmpipe's last frame here");
+    app.add_option("--peer-output", peer_output, "Also write llvmpipe's last frame here")
+        ->excludes(no_peer);
     CLI11_PARSE(app, argc, argv);
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 
     return rl::guarded_main("12_fast", [&] {
-        rl::check_image_output(output);
-        if (!peer_output.empty()) rl::check_image_output(peer_output);
+        // Both images are written together at the end, or neither: a peer that
+        // fails (or a signal while it is timed) replaces nothing.
+        rl::ImageOutputs outputs;
+        outputs.check(output);
+        if (!peer_output.empty()) {
+#ifndef RASTERLAB_LLVMPIPE
+            throw std::invalid_argument(
+                "--peer-output: this build has no llvmpipe peer (OSMesa, libosmesa6-dev, missing; "
+                "or a sanitized build)");
+#endif
+            outputs.check(peer_output);
+        }
         normal_mapping::MappedScene scene =
             normal_mapping::load_scene(cli, width, height, "12_fast");
         options.render = cli.options;  // with the lighting and output load_scene set
         fast::Renderer renderer(scene.models, width, height, options);
         const auto [ms, counts] = fast::render_orbit(renderer, scene.camera, frames);
-        rl::save_image(output, renderer.frame());
+        outputs.stage(output, renderer.frame());
         std::printf(
             "%d frames of %dx%d on %d threads (%s): median %.2f ms per frame (first excluded); "
             "%zu triangles, %.1f M triangles/s, %.1f M pixels shaded/s; into %s\n",
@@ -72,7 +85,10 @@ int main(int argc, char** argv) {
             t.vertex, t.setup, t.binning, t.tiles,
             100.0 * static_cast<double>(counts.tiles.shaded) /
                 static_cast<double>(std::max<std::uint64_t>(counts.tiles.lanes, 1)));
-        if (!peer) return 0;
+        if (!peer) {
+            outputs.commit();
+            return 0;
+        }
 #ifdef RASTERLAB_LLVMPIPE
         fast::LlvmpipePeer llvmpipe(width, height, renderer.threads());
         llvmpipe.upload(scene.models, options.render);
@@ -87,10 +103,11 @@ int main(int argc, char** argv) {
             "%.3f%% of pixels differ by more than 8/255\n",
             llvmpipe.version().c_str(), renderer.threads(), peer_ms, ms / peer_ms,
             100.0 * diff.share_over);
-        if (!peer_output.empty()) rl::save_image(peer_output, peer_frame);
+        if (!peer_output.empty()) outputs.stage(peer_output, peer_frame);
 #else
         std::printf("llvmpipe peer skipped: this build has none (OSMesa, libosmesa6-dev, missing; or a sanitized build)\n");
 #endif
+        outputs.commit();
         return 0;
     });
 }
