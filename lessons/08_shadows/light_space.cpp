@@ -63,7 +63,8 @@ perspective::Box visible_box(const perspective::Camera& camera, float aspect,
     return out;
 }
 
-LightView light_view(const ShadowLight& light, const perspective::Box& covered) {
+LightView light_view(const ShadowLight& light, const perspective::Box& covered,
+                     const perspective::Box& casters) {
     if (covered.empty()) throw std::invalid_argument("the shadow map has nothing to cover");
     if (!(rl::length(light.direction) > 0) || !std::isfinite(rl::length(light.direction)))
         throw std::invalid_argument("--light: the light needs a direction");
@@ -78,6 +79,10 @@ LightView light_view(const ShadowLight& light, const perspective::Box& covered) 
         const rl::mat4 view = light_look_at(out.position, centre, out.direction);
         perspective::Box in_light;  // the covered box's corners in the light's view space
         for (int i = 0; i < 8; ++i) in_light.add(transform_point(view, covered.corner(i)));
+        // Casters nearer the light than the receivers (larger view-space z)
+        // push the near plane out; the sides stay the receivers'.
+        for (int i = 0; !casters.empty() && i < 8; ++i)
+            in_light.max.z = std::max(in_light.max.z, transform_point(view, casters.corner(i)).z);
         // A square map: the larger side, centred, so that a texel is square in world units.
         out.width = std::max(
             {in_light.max.x - in_light.min.x, in_light.max.y - in_light.min.y, radius * 1e-4f});
@@ -106,6 +111,8 @@ LightView light_view(const ShadowLight& light, const perspective::Box& covered) 
     far = std::max(far, radius * 1e-3f);
     float near = far;
     for (int i = 0; i < 8; ++i) near = std::min(near, -transform_point(view, covered.corner(i)).z);
+    for (int i = 0; !casters.empty() && i < 8; ++i)  // casters nearer the light than the receivers
+        near = std::min(near, -transform_point(view, casters.corner(i)).z);
     near = std::max(near, far / 1000);
     out.tan_half_angle = std::tan(0.5f * rl::radians(light.cone_degrees));
     out.view_projection = rl::perspective(light.cone_degrees, 1, near, far * 1.0001f) * view;

@@ -62,11 +62,18 @@ rl::mat4 orthographic(float left, float right, float bottom, float top, float ne
 perspective::Box visible_box(const perspective::Camera& camera, float aspect,
                              const perspective::Box& scene);
 
-// The light's view fitted around `covered`: a directional light's
-// orthographic box holds all its corners; a spot light's frustum keeps its
-// cone and puts its near and far planes around them (near at least far /
-// 1000, so that a light inside the box keeps a usable depth range).
+// The light's view fitted around `covered`, the receivers: a directional
+// light's orthographic box holds all its corners; a spot light's frustum
+// keeps its cone and puts its near and far planes around them (near at
+// least far / 1000, so that a light inside the box keeps a usable depth
+// range). The near plane then moves towards the light over `casters` (the
+// whole scene's box): a caster outside the camera's view can still stand
+// between the light and a point the camera sees, and the map must hold it.
 // Throws std::invalid_argument for an empty box or a zero direction.
-LightView light_view(const ShadowLight& light, const perspective::Box& covered);
+LightView light_view(const ShadowLight& light, const perspective::Box& covered,
+                     const perspective::Box& casters);
+inline LightView light_view(const ShadowLight& light, const perspective::Box& covered) {
+    return light_view(light, covered, covered);
+}
 
 }  // namespace shadows

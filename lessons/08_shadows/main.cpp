@@ -31,10 +31,11 @@ int main(int argc, char** argv) {
                    "Spot light: where it is, x y z (default: along --light, outside the scene)")
         ->expected(3)
         ->check(rl::finite_number());
-    app.add_option("--cone", options.light.cone_degrees,
-                   "Spot light: the cone's full opening angle, degrees (1 to 170)")
-        ->capture_default_str()
-        ->check(rl::finite_number(1, 170));
+    CLI::Option* cone =
+        app.add_option("--cone", options.light.cone_degrees,
+                       "Spot light: the cone's full opening angle, degrees (1 to 170)")
+            ->capture_default_str()
+            ->check(rl::finite_number(1, 170));
     app.add_option(
            "--shadow-map-size", options.map.size,
            "Shadow map texels per side (1 to " + std::to_string(shadows::kMaxShadowMapSize) + ")")
@@ -75,6 +76,8 @@ int main(int argc, char** argv) {
 
     return rl::guarded_main("08_shadows", [&] {
         rl::check_image_output(output);
+        shadows::refuse_spot_options(options.light.type, !light_position.empty(),
+                                     cone->count() > 0);
         shadows::set_lights(options, view, one_light);
         options.map.cull = shadows::cull_for(map_faces);
         std::vector<std::string> warnings;

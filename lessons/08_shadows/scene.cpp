@@ -1,5 +1,7 @@
 #include "scene.hpp"
 
+#include <stdexcept>
+
 #include "rasterlab/transform.hpp"
 
 namespace shadows {
@@ -38,6 +40,15 @@ void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bo
     if (one_light) options.render.lighting.lights.resize(1);
 }
 
+void refuse_spot_options(LightType type, bool position_given, bool cone_given) {
+    if (type == LightType::spot) return;
+    if (position_given)
+        throw std::invalid_argument(
+            "--light-position: only a spot light has a position (add --light-type spot)");
+    if (cone_given)
+        throw std::invalid_argument("--cone: only a spot light has a cone (add --light-type spot)");
+}
+
 void place_spot(ShadowOptions& options, const perspective::Box& box,
                 const std::vector<float>& position) {
     if (options.light.type != LightType::spot) return;
@@ -60,7 +71,7 @@ ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
         covered.add(rl::vec3{-1, -1, -1});
         covered.add(rl::vec3{1, 1, 1});
     }
-    return render_shadow_map(models, light_view(options.light, covered), options.map);
+    return render_shadow_map(models, light_view(options.light, covered, scene), options.map);
 }
 
 SplitLighting split_lighting(const ShadowOptions& options) {

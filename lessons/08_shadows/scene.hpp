@@ -66,6 +66,11 @@ rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_lig
 // `one_light`). Throws std::invalid_argument naming --light for 0 0 0.
 void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bool one_light);
 
+// Throws std::invalid_argument naming the option when a spot light's own
+// options (--light-position, --cone) come with another kind of light: they
+// would be ignored without a word.
+void refuse_spot_options(LightType type, bool position_given, bool cone_given);
+
 // A spot light's place: `position` (three numbers) if given, else
 // default_spot_position(); nothing for a directional light.
 void place_spot(ShadowOptions& options, const perspective::Box& box,

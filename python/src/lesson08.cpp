@@ -28,6 +28,10 @@ void bind_lesson08(py::module_ m) {
             const std::vector<float> position =
                 light_position ? three("--light-position", *light_position) : std::vector<float>{};
             options.light.cone_degrees = finite("--cone", cone, 1, 170);
+            // A cone other than the default counts as given, as on the command line.
+            shadows::refuse_spot_options(
+                options.light.type, light_position.has_value(),
+                options.light.cone_degrees != shadows::ShadowOptions{}.light.cone_degrees);
             options.map.size = shadow_map_size;
             options.map.constant_bias = finite("--bias", bias, 0, 0.1);
             options.map.slope_bias = finite("--slope-bias", slope_bias, 0, 100);

@@ -113,3 +113,10 @@ def test_no_models_is_not_the_default_scene():
 def test_what_a_model_is(models):
     with pytest.raises(TypeError, match="a model is a path"):
         rasterlab.lesson07.render(models)
+
+
+def test_spot_options_need_a_spot_light(programs):
+    assert refused(ValueError, lambda: rasterlab.lesson08.render(light_position=(1, 2, 3))) == \
+        programs.error("08", "--light-position", 1, 2, 3)
+    assert refused(ValueError, lambda: rasterlab.lesson08.render(cone=30)) == \
+        programs.error("08", "--cone", 30)

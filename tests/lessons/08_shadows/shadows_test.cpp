@@ -300,4 +300,31 @@ TEST(ShadowsTest, FittingToTheViewCoversNoMoreThanTheScene) {
     EXPECT_LT(seen.max.x - seen.min.x, scene.max.x - scene.min.x);
 }
 
+// A camera low over the floor, looking away from the crate into its shadow:
+// the crate is outside the view, yet it stands between the light and
+// every floor point the view holds. Fitting the map to the view must keep
+// it (the near plane moves towards the light over the scene's box), so the
+// view fit shadows those points as the scene fit does.
+TEST(ShadowsTest, FittingToTheViewKeepsCastersOutsideTheView) {
+    const std::vector<MappedModel> models = floor_scene(true);
+    perspective::Camera camera;
+    camera.eye = {-0.2f, 0.3f, -0.8f};
+    camera.target = {-0.2f, 0, -1.6f};
+    camera.near = 0.05f;
+    camera.far = 2;
+    ShadowOptions options;
+    options.light.direction = rl::normalize(rl::vec3{0.3f, 0.5f, 1.0f});
+    const perspective::Box seen = visible_box(camera, 1, scene_box(models));
+    ASSERT_LT(seen.max.z, -0.55f) << "the crate must be outside the view for this test";
+    options.fit = Fit::view;
+    const ShadowMap view_map = shadow_map_for(models, camera, 1, options);
+    options.fit = Fit::scene;
+    const ShadowMap scene_map = shadow_map_for(models, camera, 1, options);
+    // Floor points in the view and in the crate's shadow.
+    const FloorShadow by_scene = floor_shadow(scene_map, options.lookup, -0.5f, 0.1f, -2.0f, -1.2f);
+    const FloorShadow by_view = floor_shadow(view_map, options.lookup, -0.5f, 0.1f, -2.0f, -1.2f);
+    EXPECT_GT(by_scene.shadowed, 0.99);
+    EXPECT_GT(by_view.shadowed, 0.99);
+}
+
 }  // namespace
