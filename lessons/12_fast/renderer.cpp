@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 #include <stdexcept>
@@ -40,6 +41,16 @@ struct CornerHash {
 std::unique_ptr<PackedTexture> packed(const std::optional<textures::MipChain>& chain,
                                       bool all_levels) {
     return chain ? std::make_unique<PackedTexture>(*chain, all_levels) : nullptr;
+}
+
+[[noreturn]] void throw_binning_cap(std::size_t entries, std::size_t cap, int tile) {
+    char message[256];
+    std::snprintf(message, sizeof message,
+                  "binning this frame needs %.3g tile entries (%.2f GiB), more than the cap of "
+                  "%.3g (%.2f GiB): raise --tile-size (now %d), or lower --width/--height",
+                  static_cast<double>(entries), static_cast<double>(entries) * 4 / (1u << 30),
+                  static_cast<double>(cap), static_cast<double>(cap) * 4 / (1u << 30), tile);
+    throw std::invalid_argument(message);
 }
 
 }  // namespace
@@ -89,7 +100,8 @@ struct Renderer::Impl {
     // The bins, as one array sorted by tile (a counting sort): tile i's
     // triangles are binned[bin_start[i] .. bin_start[i + 1]), in drawing order.
     std::size_t tiles = 0;
-    std::vector<std::uint32_t> bin_start, bin_fill, binned;
+    std::vector<std::size_t> bin_start, bin_fill;  // 64-bit: the entries can pass 2^32
+    std::vector<std::uint32_t> binned;
     std::vector<TileCounts> tile_counts;                // per tile
     std::vector<std::unique_ptr<TileBuffers>> buffers;  // per worker thread
 
@@ -314,13 +326,20 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                 visit(static_cast<std::size_t>(ty * s.tiles_x + tx));
     };
     // [doc:binning]
+    std::size_t entries = 0;  // counted first, so that a frame over the cap costs nothing
+    for (const FastTriangle& f : s.triangles)
+        entries += static_cast<std::size_t>(f.x1 / tile - f.x0 / tile + 1) *
+                   static_cast<std::size_t>(f.y1 / tile - f.y0 / tile + 1);
+    if (entries > s.options.max_binned_entries)
+        throw_binning_cap(entries, s.options.max_binned_entries, tile);
     std::fill(s.bin_start.begin(), s.bin_start.end(), 0);
     for (const FastTriangle& f : s.triangles)
         each_tile_of(f, [&](std::size_t i) { ++s.bin_start[i + 1]; });
     for (std::size_t i = 0; i < s.tiles; ++i) s.bin_start[i + 1] += s.bin_start[i];
     // Grown by half again when a frame needs more, so that an orbit's
     // frames after the first rarely need to grow it at all.
-    if (s.bin_start[s.tiles] > s.binned.size()) s.binned.resize(s.bin_start[s.tiles] * 3 / 2);
+    if (entries > s.binned.size())
+        s.binned.resize(std::min(entries * 3 / 2, std::max(entries, s.options.max_binned_entries)));
     std::copy(s.bin_start.begin(), s.bin_start.end() - 1, s.bin_fill.begin());
     for (std::size_t t = 0; t < s.triangles.size(); ++t)
         each_tile_of(s.triangles[t], [&](std::size_t i) {

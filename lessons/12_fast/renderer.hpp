@@ -28,9 +28,15 @@
 
 namespace fast {
 
+// The most tile entries (a triangle in one tile's bin) a frame may bin: 2^28,
+// 1 GiB of 32-bit triangle indices. A few hundred large triangles at 16384²
+// in 8-pixel tiles need billions; render() refuses such a frame, naming the cap.
+inline constexpr std::size_t kMaxBinnedEntries = std::size_t{1} << 28;
+
 struct FastOptions {
-    int threads = 0;                       // 0: every core
-    int tile_size = 64;                    // pixels per side, a multiple of 8
+    int threads = 0;                                     // 0: every core
+    int tile_size = 64;                                  // pixels per side, a multiple of 8
+    std::size_t max_binned_entries = kMaxBinnedEntries;  // the binning cap (a test lowers it)
     normal_mapping::RenderOptions render;  // lesson 07's shading options and its pipeline's
     // The techniques, for the lab to turn off one at a time:
     bool vertex_cache = true;  // the vertex function once per distinct vertex, not per corner

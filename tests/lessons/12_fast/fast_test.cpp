@@ -365,4 +365,27 @@ TEST(Options, RefusedWithTheReason) {
     EXPECT_THROW(fast::Renderer(s.models, 64, 64, o), std::invalid_argument);
 }
 
+// The bins are sized in 64 bits and capped: a frame that would bin more
+// tile entries than the cap is refused, naming the cap and --tile-size,
+// before anything is written (at 16384² in 8-pixel tiles a few hundred large
+// triangles wrapped a 32-bit count and wrote past the buffer). At 64x64
+// in 8-pixel tiles the default scene bins about a hundred entries.
+TEST(Options, BinningOverItsCapIsRefusedNamingTheCap) {
+    fast::FastOptions options;
+    options.tile_size = 8;
+    const Scene s = default_scene(options.render);
+    fast::Renderer fits(s.models, 64, 64, options);
+    EXPECT_NO_THROW(fits.render(s.camera));
+    options.max_binned_entries = 20;
+    fast::Renderer over(s.models, 64, 64, options);
+    try {
+        over.render(s.camera);
+        ADD_FAILURE() << "a frame over the binning cap was drawn";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("more than the cap of 20"), std::string::npos)
+            << e.what();
+        EXPECT_NE(std::string(e.what()).find("--tile-size"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
