@@ -16,6 +16,7 @@
 #include <variant>
 #include <vector>
 
+#include "made_by_init.hpp"
 #include "rasterlab/image.hpp"
 
 namespace py_rl {
@@ -48,3 +49,5 @@ struct Result {
 void bind_result(py::module_& m);
 
 }  // namespace py_rl
+
+RASTERLAB_REFUSE_USE_BEFORE_INIT(Result, "Result")

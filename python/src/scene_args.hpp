@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "05_perspective/view_options.hpp"
+#include "made_by_init.hpp"
 #include "rasterlab/mesh.hpp"
 
 namespace py_rl {
@@ -58,3 +59,6 @@ void check_size(int width, int height);
 void bind_scene_args(py::module_& m);
 
 }  // namespace py_rl
+
+RASTERLAB_REFUSE_USE_BEFORE_INIT(Mesh, "Mesh")
+RASTERLAB_REFUSE_USE_BEFORE_INIT(Camera, "Camera")
