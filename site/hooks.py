@@ -16,11 +16,24 @@ site has none of that, so these hooks
   order;
 - leave out what is not a page: docs/CMakeLists.txt, and the lab tables of
   docs/charts/*.md, which each page already includes where it refers to them.
+
+The build reads only the repository's files and writes only into the site
+folder (and its own temporary folder): a link that leaves the repository
+(`../../../../etc/passwd`), or goes through a symbolic link to a file outside
+it, is refused, as is a file of docs/ that is such a link; every file's
+destination must resolve inside the site folder. What it copies is capped
+(MAX_SOURCE_PAGE_BYTES, MAX_IMAGE_BYTES, MAX_DOCS_FILE_BYTES), and an image
+must be one by its first bytes. A refusal raises PluginError from on_files,
+which ends every build, strict or not, before anything is written to the site
+folder (a logged error would end only a --strict build, and only once every
+page had been written); docs/robustness.md lists the cases and
+tests/scripts/site_hooks_selftest.py tries them.
 """
+import os
 import pathlib
 import posixpath
 import re
-import shutil
+import stat
 import tempfile
 
 from mkdocs.exceptions import PluginError
@@ -33,7 +46,21 @@ from pygments.util import ClassNotFound
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 KATEX = pathlib.Path("/usr/share/javascript/katex")
 SOURCE = "source"  # where the files from outside docs/ go in the site
-IMAGES = {".png", ".jpg", ".jpeg", ".svg", ".gif"}
+# The caps on what the site takes from the repository (docs/robustness.md):
+MAX_SOURCE_PAGE_BYTES = 1 << 20  # a file from outside docs/ shown as a page (code, Markdown)
+MAX_IMAGE_BYTES = 20 << 20  # an image from outside docs/ (the largest of obj/ is 1 MB)
+MAX_DOCS_FILE_BYTES = 20 << 20  # any file of docs/ itself, which MkDocs copies or renders
+# What an image's first bytes must be, by its name: a .png must be a PNG.
+IMAGE_SIGNATURES = {
+    ".png": ("a PNG", (b"\x89PNG\r\n\x1a\n",)),
+    ".jpg": ("a JPEG", (b"\xff\xd8\xff",)),
+    ".jpeg": ("a JPEG", (b"\xff\xd8\xff",)),
+    ".gif": ("a GIF", (b"GIF87a", b"GIF89a")),
+}
+# An SVG: an XML declaration, comments and a doctype at most before <svg.
+SVG_START = re.compile(
+    rb"(\xef\xbb\xbf)?\s*(<\?xml[^>]*>\s*)?((<!--.*?-->|<!DOCTYPE[^>]*>)\s*)*<svg[\s>]", re.S)
+IMAGES = set(IMAGE_SIGNATURES) | {".svg"}
 # A Markdown link or image whose target leaves docs/: ](../path#anchor)
 OUTSIDE_LINK = re.compile(r"\]\(\.\./(?P<path>[^)\s#]+)(?P<anchor>#[^)\s]*)?\)")
 # The code host's line ranges (#L40-L42) become the site's line anchors (#L40).
@@ -42,16 +69,100 @@ LINE_RANGE = re.compile(r"^#L(\d+)(-L\d+)?$")
 _generated = None  # the folder the generated pages live in during a build
 
 
+def _inside(path: pathlib.Path, folder: pathlib.Path) -> bool:
+    """Whether a path, its symbolic links followed, is in a folder (itself resolved)."""
+    return pathlib.Path(os.path.realpath(path)).is_relative_to(folder)
+
+
+def _check_docs_file(path: pathlib.Path) -> None:
+    """Refuses a file of docs/ that is a symbolic link to a file outside the
+    repository, is not a regular file or is over MAX_DOCS_FILE_BYTES."""
+    name = os.path.relpath(path, ROOT)
+    real = pathlib.Path(os.path.realpath(path))
+    if not real.is_relative_to(ROOT):
+        raise PluginError(f"{name} goes through a symbolic link to {real}, outside the "
+                          f"repository {ROOT}: the site takes only the repository's files")
+    try:
+        info = os.stat(real)
+    except OSError:
+        info = None
+    if info is None or not stat.S_ISREG(info.st_mode):
+        raise PluginError(f"{name} is not a regular file")
+    if info.st_size > MAX_DOCS_FILE_BYTES:
+        raise PluginError(f"{name} is too large: over {MAX_DOCS_FILE_BYTES} bytes "
+                          "(MAX_DOCS_FILE_BYTES, for a file of docs/)")
+
+
+def _repository_file(page: str, path: str, image: bool) -> bytes:
+    """The bytes of the file a page links to as ../path: a regular file of the
+    repository, reached without leaving it (no '..', no symbolic link to a file
+    outside it), of at most MAX_IMAGE_BYTES for an image, MAX_SOURCE_PAGE_BYTES
+    for a file shown as a page."""
+    link = f"{page} links to ../{path}"
+    parts = path.split("/")
+    if path.startswith("/") or ".." in parts:
+        raise PluginError(f"{link}, which leaves the repository {ROOT}: the site takes only "
+                          "the repository's files")
+    if "" in parts or "." in parts or "\0" in path:
+        raise PluginError(f"{link}: not a plain path (an empty or '.' part, a NUL)")
+    real = pathlib.Path(os.path.realpath(ROOT / path))
+    if not real.is_relative_to(ROOT):
+        raise PluginError(f"{link}, which goes through a symbolic link to {real}, outside the "
+                          f"repository {ROOT}: the site takes only the repository's files")
+    try:
+        info = os.stat(real)
+    except OSError:
+        info = None
+    if info is None or not stat.S_ISREG(info.st_mode):
+        raise PluginError(f"{link}, which is not a file")
+    limit, name = ((MAX_IMAGE_BYTES, "MAX_IMAGE_BYTES, for an image") if image else
+                   (MAX_SOURCE_PAGE_BYTES, "MAX_SOURCE_PAGE_BYTES, for a file shown as a page"))
+    if info.st_size > limit:
+        raise PluginError(f"{link}, which is too large: over {limit} bytes ({name})")
+    with open(real, "rb") as file:  # no more than it held when measured
+        data = file.read(info.st_size + 1)
+    if len(data) != info.st_size:
+        raise PluginError(f"{link}, which changed while the site was built")
+    return data
+
+
+def _check_image(page: str, path: str, data: bytes) -> None:
+    """An image must be one by its first bytes, of the kind its name says."""
+    suffix = pathlib.PurePosixPath(path).suffix.lower()
+    if suffix == ".svg":
+        kind, ok = "an SVG", SVG_START.match(data[:4096]) is not None
+    else:
+        kind, signatures = IMAGE_SIGNATURES[suffix]
+        ok = data.startswith(signatures)
+    if not ok:
+        raise PluginError(f"{page} links to ../{path} as an image, but it is not {kind} "
+                          f"image (it starts with {data[:8]!r})")
+
+
 def _outside_targets(docs_dir: pathlib.Path) -> dict:
-    """Every file outside docs/ that a page links to, with the pages that do."""
+    """Every file outside docs/ that a page links to, with the pages that do
+    and the file's bytes, checked (_repository_file, _check_image)."""
     targets = {}
     for page in sorted(docs_dir.glob("*.md")):
+        _check_docs_file(page)
         for match in OUTSIDE_LINK.finditer(page.read_text()):
             path = match.group("path")
-            if not (ROOT / path).is_file():
-                raise PluginError(f"{page.name} links to ../{path}, which is not a file")
-            targets.setdefault(path, []).append(page.name)
+            if path not in targets:
+                suffix = pathlib.PurePosixPath(path).suffix.lower()
+                data = _repository_file(page.name, path, suffix in IMAGES)
+                if suffix in IMAGES:
+                    _check_image(page.name, path, data)
+                targets[path] = (data, [])
+            targets[path][1].append(page.name)
     return targets
+
+
+def _text(page: str, path: str, data: bytes) -> str:
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        raise PluginError(f"{page} links to ../{path}, which is not UTF-8 text "
+                          f"(byte {error.start}): a source page shows text only") from None
 
 
 def _title(page: str) -> str:
@@ -62,9 +173,8 @@ def _title(page: str) -> str:
     return page
 
 
-def _code_page(path: str, pages: list) -> str:
+def _code_page(path: str, text: str, pages: list) -> str:
     """A page that shows one source file with anchored line numbers."""
-    text = (ROOT / path).read_text()
     try:
         lexer = get_lexer_for_filename(path, stripnl=False)
     except ClassNotFound:
@@ -93,18 +203,30 @@ def on_files(files, config):
                 file.src_uri.startswith("charts/") and file.src_uri.endswith(".md")):
             files.remove(file)
 
-    _generated = tempfile.TemporaryDirectory(prefix="rasterlab-site-")
-    generated = pathlib.Path(_generated.name)
-    for path, pages in _outside_targets(docs_dir).items():
+    # Everything is read and checked before anything is written.
+    for file in files:
+        if pathlib.Path(file.abs_src_path).is_relative_to(docs_dir):
+            _check_docs_file(pathlib.Path(file.abs_src_path))
+    contents = {}
+    for path, (data, pages) in _outside_targets(docs_dir).items():
         suffix = pathlib.PurePosixPath(path).suffix.lower()
-        name = _site_name(path)
-        (generated / name).parent.mkdir(parents=True, exist_ok=True)
         if suffix in IMAGES:
-            shutil.copyfile(ROOT / path, generated / name)
+            contents[_site_name(path)] = data
         elif suffix == ".md":  # a Markdown file is a page as it is
-            (generated / name).write_text((ROOT / path).read_text())
+            contents[_site_name(path)] = _text(pages[0], path, data).encode()
         else:
-            (generated / name).write_text(_code_page(path, pages))
+            text = _code_page(path, _text(pages[0], path, data), pages)
+            contents[_site_name(path)] = text.encode()
+
+    _generated = tempfile.TemporaryDirectory(prefix="rasterlab-site-")
+    generated = pathlib.Path(os.path.realpath(_generated.name))
+    for name, data in contents.items():
+        target = generated / name
+        if not _inside(target, generated):  # cannot be: _repository_file refuses '..'
+            raise PluginError(f"{name} would be written to {os.path.realpath(target)}, outside "
+                              f"the build's temporary folder {generated}")
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_bytes(data)
         files.append(File(name, str(generated), config["site_dir"], config["use_directory_urls"]))
 
     if not (KATEX / "katex.min.js").is_file():
@@ -119,6 +241,14 @@ def on_files(files, config):
     for name in ["typeset.js", "site.css"]:
         files.append(File(name, str(ROOT / "site"), config["site_dir"],
                           config["use_directory_urls"]))
+
+    # Nothing is written outside the site folder, a symbolic link in it included.
+    site_dir = pathlib.Path(os.path.realpath(config["site_dir"]))
+    for file in files:
+        if not _inside(pathlib.Path(file.abs_dest_path), site_dir):
+            raise PluginError(f"{file.src_uri} would be written to "
+                              f"{os.path.realpath(file.abs_dest_path)}, outside the site "
+                              f"folder {site_dir}")
     return files
 
 
@@ -151,8 +281,17 @@ def on_page_markdown(markdown, page, config, files):
     return OUTSIDE_LINK.sub(lambda m: _site_target(m, page_dir), markdown)
 
 
-def on_post_build(config):
+def _remove_generated():
     global _generated
     if _generated is not None:
         _generated.cleanup()
         _generated = None
+
+
+def on_post_build(config):
+    _remove_generated()
+
+
+def on_build_error(error):
+    """A refused build leaves no temporary folder behind."""
+    _remove_generated()
