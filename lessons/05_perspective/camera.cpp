@@ -3,11 +3,22 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 #include "rasterlab/transform.hpp"
 
 namespace perspective {
+namespace {
+
+// The box's longest side: its size, without squares that would overflow a
+// float at 1e20 or vanish at 1e-20.
+float longest_side(const Box& box) {
+    const rl::vec3 d = box.max - box.min;
+    return std::max({d.x, d.y, d.z});
+}
+
+}  // namespace
 
 void check(const Camera& camera) {
     if (!(camera.fov_y > 0 && camera.fov_y < 180))
@@ -30,6 +41,19 @@ void check(const Camera& camera) {
         throw std::invalid_argument(
             "--eye/--target/--up: the eye must differ from the target, and up must not be "
             "parallel to the viewing direction");
+    // Below the smallest normal float, near * far (which the projection
+    // holds) loses its digits and then becomes 0: depth would no longer
+    // depend on distance. A model 1e-20 across is framed with near * far
+    // about 1e-40; one 1e-15 across draws as a unit one does.
+    if (static_cast<double>(camera.near) * camera.far < std::numeric_limits<float>::min()) {
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "--near/--far: near * far is %.2g, below a float's smallest normal number "
+                      "(1.2e-38): the camera's matrices would lose the depth; scale the scene up "
+                      "(a model framed automatically must be at least about 1e-19 across)",
+                      static_cast<double>(camera.near) * camera.far);
+        throw std::invalid_argument(text);
+    }
     // Far * near and the eye's distance enter the matrices: past about 1e19
     // they overflow a float, and every vertex would become infinite or NaN.
     const rl::mat4 m = view_projection(camera, 1.0f);
@@ -91,7 +115,10 @@ Camera frame_box(const Box& box, float fov_y, float aspect) {
     const rl::vec3 right = rl::normalize(rl::cross(camera.up, back));
     const rl::vec3 up = rl::cross(back, right);
     const float tan_y = std::tan(rl::radians(fov_y) * 0.5f), tan_x = tan_y * aspect;
-    float distance = 1e-6f;
+    // Floors relative to the box, so that a model a billionth of a unit
+    // across is framed as a large one is (a point, of no size, gets any camera).
+    const float size = longest_side(box);
+    float distance = size > 0 ? size * 1e-6f : 1e-6f;
     for (int i = 0; i < 8; ++i) {
         const rl::vec3 c = box.corner(i) - camera.target;
         const float z = rl::dot(c, back);
@@ -113,7 +140,8 @@ void fit_depth_range(Camera& camera, const Box& box) {
         nearest = std::min(nearest, d);
         farthest = std::max(farthest, d);
     }
-    camera.far = std::max(farthest * 1.01f, 1e-3f);
+    const float size = longest_side(box);
+    camera.far = std::max(farthest * 1.01f, size > 0 ? size * 1e-3f : 1e-3f);
     camera.near = std::max(nearest * 0.99f, camera.far * 1e-4f);
 }
 

@@ -449,4 +449,33 @@ TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
     }
 }
 
+// A tiny model is framed as a large one is: the framing's floors (the eye's
+// distance, the far plane) are relative to the model's size. With absolute
+// floors (far at least 1e-3) a model 1e-9 across drew nothing, with exit 0.
+TEST(PerspectiveTest, TinyModelIsFramedAndDrawnLikeAUnitOne) {
+    const auto draw = [](float scale) {
+        std::vector<std::string> warnings;
+        std::vector<TexturedModel> models;
+        models.push_back(load_model(rl::project_model("crate"),
+                                    rl::compose({.scale = {scale, scale, scale}}), warnings));
+        const Camera camera = frame_box(scene_bounds(models), 50, 1);
+        check(camera);
+        perspective::ColourTarget frame = perspective::colour_target(64, 64);
+        render(models, camera, {}, frame);
+        return frame.colour();
+    };
+    const rl::Image unit = draw(1);
+    for (float scale : {1e-3f, 1e-9f, 1e-15f}) {
+        const rl::ImageDiff d = rl::compare_images(unit, draw(scale), 8);
+        EXPECT_LT(d.share_over, 0.001) << "scale " << scale;
+    }
+    // Smaller still, near * far underflows a float: refused, saying so.
+    try {
+        draw(1e-25f);
+        ADD_FAILURE() << "a camera framing a 1e-25 model was accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("smallest normal"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
