@@ -303,6 +303,27 @@ TEST(Image, RandomDegenerateMeshesMatchLessonSevenAtAnySize) {
     std::filesystem::remove(obj);
 }
 
+// Pitfall: the depth test is `less`, as lesson 07's: of two coplanar
+// surfaces, the one drawn first keeps every pixel. The floor drawn twice,
+// the second copy plain red: a `less or equal` test would let the red copy
+// win wherever its depth rounds the same (every pixel here, the same
+// triangles twice), and the picture would no longer be lesson 07's.
+TEST(Image, EqualDepthsKeepTheSurfaceDrawnFirst) {
+    fast::FastOptions options;
+    Scene s = default_scene(options.render);
+    s.models.erase(s.models.begin() + 1, s.models.end());  // the floor
+    s.models.push_back(s.models.front());
+    rl::Image red(4, 4);
+    for (rl::Rgba& p : red.pixels()) p = {255, 0, 0, 255};
+    s.models.back().lit.model.texture = textures::MipChain(red);
+    const rl::Image expected = lesson07(s, options.render, 96, 72);
+    const rl::Image actual = fast_image(s, options, 96, 72);
+    expect_lesson07_tolerance(expected, actual, "coplanar floors");
+    int red_pixels = 0;
+    for (const rl::Rgba& p : actual.pixels()) red_pixels += p.r > 3 * p.g + 30;
+    EXPECT_EQ(red_pixels, 0);
+}
+
 TEST(Image, SameBytesWhateverTheThreadCount) {
     fast::FastOptions options;
     const Scene s = default_scene(options.render);
