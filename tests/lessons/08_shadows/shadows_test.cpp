@@ -327,4 +327,39 @@ TEST(ShadowsTest, FittingToTheViewKeepsCastersOutsideTheView) {
     EXPECT_GT(by_view.shadowed, 0.99);
 }
 
+// Pitfall: the shadow darkens the key light only. The ambient term and the
+// fill light stand for light from everywhere else, which one map cannot
+// test: a point in the crate's shadow is lit exactly as lesson 07 lights
+// it without the key light, and no pixel is darker than that.
+TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
+    const std::vector<MappedModel> models = floor_scene(true);
+    perspective::Camera camera;
+    camera.eye = {2.5f, 3.0f, 3.5f};
+    camera.target = {0, 0, 0};
+    camera.near = 0.5f;
+    camera.far = 20;
+    ShadowOptions options;
+    options.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});
+    options.render.lighting = shading::default_lighting(options.light.direction);
+    ASSERT_GE(options.render.lighting.lights.size(), 2u) << "the test wants a fill light too";
+    const ShadowMap map = shadow_map_for(models, camera, 1, options);
+    perspective::ColourTarget shadowed = perspective::colour_target(96, 96);
+    render(models, camera, options, map, shadowed);
+    normal_mapping::RenderOptions without_key = options.render;
+    without_key.lighting.lights.erase(without_key.lighting.lights.begin());
+    perspective::ColourTarget unlit = perspective::colour_target(96, 96);
+    normal_mapping::render(models, camera, without_key, unlit);
+    int in_shadow = 0, darker = 0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) {
+            const rl::Rgba a = shadowed.colour().get(x, y), b = unlit.colour().get(x, y);
+            const int d[3] = {a.r - b.r, a.g - b.g, a.b - b.b};
+            darker += d[0] < -1 || d[1] < -1 || d[2] < -1;
+            in_shadow += std::abs(d[0]) <= 1 && std::abs(d[1]) <= 1 && std::abs(d[2]) <= 1 &&
+                         a != rl::kBackground;
+        }
+    EXPECT_EQ(darker, 0);
+    EXPECT_GT(in_shadow, 40) << "the crate's shadow should cover some of the floor (78 pixels)";
+}
+
 }  // namespace
