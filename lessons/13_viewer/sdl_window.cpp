@@ -137,7 +137,7 @@ Input SdlWindow::poll() {
     return input;
 }
 
-void SdlWindow::show(const rl::Image& frame, const std::string* screenshot) {
+void SdlWindow::draw(const rl::Image& frame) {
     if (!texture_ || frame.width() != texture_width_ || frame.height() != texture_height_) {
         if (texture_) SDL_DestroyTexture(texture_);
         // RGBA bytes in memory order: SDL's ABGR8888 on a little-endian machine.
@@ -153,6 +153,10 @@ void SdlWindow::show(const rl::Image& frame, const std::string* screenshot) {
     // rasterlab's first row is the bottom one, the window's the top one.
     if (SDL_RenderCopyEx(renderer_, texture_, nullptr, nullptr, 0, nullptr, SDL_FLIP_VERTICAL) != 0)
         sdl_failed("SDL_RenderCopyEx");
+}
+
+void SdlWindow::show(const rl::Image& frame, const std::string* screenshot) {
+    draw(frame);
     if (screenshot) {
         rl::Image shot(width_, height_);
         if (SDL_RenderReadPixels(renderer_, nullptr, SDL_PIXELFORMAT_RGBA32, shot.pixels().data(),
@@ -162,6 +166,15 @@ void SdlWindow::show(const rl::Image& frame, const std::string* screenshot) {
         rl::save_image(*screenshot, shot);
     }
     SDL_RenderPresent(renderer_);
+}
+
+rl::Rgba SdlWindow::shown_at(const rl::Image& frame, int x, int y_from_top) {
+    draw(frame);
+    rl::Rgba pixel{};
+    const SDL_Rect one{x, y_from_top, 1, 1};
+    if (SDL_RenderReadPixels(renderer_, &one, SDL_PIXELFORMAT_RGBA32, &pixel, 4) != 0)
+        sdl_failed("SDL_RenderReadPixels");
+    return pixel;
 }
 
 void SdlWindow::set_title(const char* title) {

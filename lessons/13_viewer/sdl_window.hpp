@@ -45,9 +45,14 @@ class SdlWindow {
     // Shows `frame`, stretched to the window; if `screenshot`, first reads the
     // window's pixels back and writes them there.
     void show(const rl::Image& frame, const std::string* screenshot);
+    // The colour the window shows at column x, row y counted from the
+    // window's top (SDL's own coordinates), for `frame` drawn as show()
+    // draws it: what a person sees there, for the tests of orientation.
+    rl::Rgba shown_at(const rl::Image& frame, int x, int y_from_top);
     void set_title(const char* title);
 
   private:
+    void draw(const rl::Image& frame);  // uploads and copies it into the back buffer
     SDL_Window* window_ = nullptr;
     SDL_Renderer* renderer_ = nullptr;
     SDL_Texture* texture_ = nullptr;
