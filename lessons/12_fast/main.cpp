@@ -66,10 +66,16 @@ int main(int argc, char** argv) {
 #endif
             outputs.check(peer_output);
         }
+        fast::check_frames(frames, width, height);
         normal_mapping::MappedScene scene =
             normal_mapping::load_scene(cli, width, height, "12_fast");
         options.render = cli.options;  // with the lighting and output load_scene set
         fast::Renderer renderer(scene.models, width, height, options);
+        if (options.threads > renderer.threads())
+            std::fprintf(stderr,
+                         "12_fast: warning: --threads %d: this machine runs %d threads at once; "
+                         "using %d\n",
+                         options.threads, renderer.threads(), renderer.threads());
         const auto [ms, counts] = fast::render_orbit(renderer, scene.camera, frames);
         outputs.stage(output, renderer.frame());
         std::printf(

@@ -1,6 +1,8 @@
 #include "orbit.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <stdexcept>
 
 #include "rasterlab/transform.hpp"
 
@@ -13,6 +15,18 @@ perspective::Camera orbit(const perspective::Camera& camera, int frame, int fram
     perspective::Camera out = camera;
     out.eye = camera.target + turn * (camera.eye - camera.target);
     return out;
+}
+
+void check_frames(int frames, int width, int height) {
+    const double pixels = static_cast<double>(frames) * width * height;
+    if (pixels <= kMaxPixelFrames) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "--frames: %d frames of %dx%d are %.3g pixels, more than the cap of 2^32 "
+                  "(4.3e9: 256 frames at 4096x4096, 16 at 16384x16384); draw fewer frames or a "
+                  "smaller image",
+                  frames, width, height, pixels);
+    throw std::invalid_argument(text);
 }
 
 double median_after_first(std::vector<double> times) {

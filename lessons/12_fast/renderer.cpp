@@ -110,7 +110,7 @@ struct Renderer::Impl {
         : options(o), width(w), height(h), workers(o.threads) {
         if (o.tile_size < kBlock || o.tile_size % kBlock != 0 || o.tile_size > 1024)
             throw std::invalid_argument(
-                "the tile size must be a multiple of 8 from 8 to 1024, not " +
+                "--tile-size: must be a multiple of 8 from 8 to 1024, not " +
                 std::to_string(o.tile_size));
         const normal_mapping::RenderOptions& r = o.render;
         if (r.pipeline.raster != triangles::RasterMethod::edge)

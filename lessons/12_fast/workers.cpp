@@ -1,5 +1,9 @@
 #include "workers.hpp"
 
+#include <algorithm>
+
+#include <tbb/info.h>
+
 #if defined(__SANITIZE_THREAD__)
 #include <sanitizer/tsan_interface.h>
 #include <tbb/task_scheduler_observer.h>
@@ -81,7 +85,12 @@ struct WorkersOutOfSight : tbb::task_scheduler_observer {
 }  // namespace thread_sanitizer
 #endif
 
-Workers::Workers(int threads) : arena_(threads > 0 ? threads : tbb::task_arena::automatic) {
+// oneTBB runs at most the machine's hardware threads at once: an arena
+// asked for more gets no more workers (and oneTBB prints a bare warning),
+// yet would report the number asked for. So ask for no more than that.
+Workers::Workers(int threads)
+    : arena_(threads > 0 ? std::min(threads, tbb::info::default_concurrency())
+                         : tbb::task_arena::automatic) {
 #if defined(__SANITIZE_THREAD__)
     arena_.initialize();
     out_of_sight_ = std::make_unique<thread_sanitizer::WorkersOutOfSight>(arena_);

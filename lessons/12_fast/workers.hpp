@@ -32,7 +32,8 @@ struct WorkersOutOfSight;  // ignores what a worker does outside a chunk
 
 class Workers {
   public:
-    explicit Workers(int threads);  // 0: as many as the machine has
+    // 0: as many as the machine has; more than it has: as many as it has.
+    explicit Workers(int threads);
     ~Workers();
     int threads() const { return arena_.max_concurrency(); }
     // Which of the threads runs this chunk: 0 .. threads() - 1.

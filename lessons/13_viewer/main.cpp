@@ -27,30 +27,41 @@ int main(int argc, char** argv) {
     normal_mapping::MappedCli cli;
     cli.every_normal_map = true;  // the N key switches between them
     normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
-    app.add_option("--width", window.width, "Window width in pixels")
+    // A window no display shows whole costs memory and time for nothing:
+    // 8192 a side is past the largest displays (8K is 7680 x 4320).
+    app.add_option("--width", window.width, "Window width in pixels (1 to 8192)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
-    app.add_option("--height", window.height, "Window height in pixels")
+        ->check(CLI::Range(1, 8192));
+    app.add_option("--height", window.height, "Window height in pixels (1 to 8192)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 16384));
-    int frames = 0;
+        ->check(CLI::Range(1, 8192));
+    int frames = 0;  // 0: until the window is closed
     app.add_option("--frames", frames,
                    "Render this many frames along lesson 12's orbit (the last is the view the "
-                   "camera options give), then stop (0: run until the window is closed)")
-        ->capture_default_str()
-        ->check(CLI::Range(0, 1000));
+                   "camera options give), then stop (1 to 1000; without it, run until the "
+                   "window is closed)")
+        ->check(CLI::Range(1, 1000));
     std::string screenshot;
-    app.add_option("-o,--screenshot", screenshot,
-                   "Write the last frame, read back from the window, here (.tga or .png); "
-                   "without --frames, after one frame");
+    CLI::Option* screenshot_option =
+        app.add_option("-o,--screenshot", screenshot,
+                       "Write the last frame, read back from the window, here (.tga or .png); "
+                       "without --frames, after one frame");
     std::string keys;
     app.add_option("--keys", keys,
                    "Key presses to send through the window's event queue before the first "
                    "frame, one character each as the list below names them (at most 256)")
         ->check([](const std::string& text) -> std::string {
             if (text.size() > 256) return "at most 256 keys";
-            for (char c : text)
-                if (!viewer::key_named(c)) return std::string("no key is named '") + c + "'";
+            for (std::size_t i = 0; i < text.size(); ++i) {
+                if (viewer::key_named(text[i])) continue;
+                // Name the whole character, not the first byte of its UTF-8.
+                std::size_t end = i + 1;
+                if (static_cast<unsigned char>(text[i]) >= 0xc0)
+                    while (end < text.size() &&
+                           (static_cast<unsigned char>(text[end]) & 0xc0) == 0x80)
+                        ++end;
+                return "no key is named '" + text.substr(i, end - i) + "'";
+            }
             return {};
         });
     bool vsync = false;
@@ -61,10 +72,11 @@ int main(int argc, char** argv) {
     const int width = window.width, height = window.height;
 
     return rl::guarded_main("13_viewer", [&] {
-        if (!screenshot.empty()) {
+        if (screenshot_option->count() > 0) {  // -o '' is refused, not ignored
             rl::check_image_output(screenshot);
             frames = std::max(frames, 1);  // a screenshot alone: one frame, then stop
         }
+        if (frames > 0) fast::check_frames(frames, width, height);
         normal_mapping::MappedScene scene =
             normal_mapping::load_scene(cli, width, height, "13_viewer");
         const perspective::Box box = normal_mapping::scene_box(scene.models);
