@@ -16,6 +16,10 @@ find_package(PkgConfig QUIET)
 rasterlab_require(PKG_CONFIG_FOUND "pkg-config" pkg-config)
 pkg_check_modules(STB QUIET IMPORTED_TARGET stb)
 rasterlab_require(STB_FOUND "stb (pkg-config module 'stb')" libstb-dev)
+# JPEG through libjpeg-turbo: stb_image's JPEG decoder reads memory it never
+# wrote on some damaged files (common/src/image_io.cpp).
+pkg_check_modules(TURBOJPEG QUIET IMPORTED_TARGET libturbojpeg)
+rasterlab_require(TURBOJPEG_FOUND "libjpeg-turbo (pkg-config module 'libturbojpeg')" libturbojpeg0-dev)
 
 find_package(CLI11 CONFIG QUIET)
 rasterlab_require(CLI11_FOUND "CLI11" libcli11-dev)

@@ -9,7 +9,8 @@ packages=(
   cmake ninja-build g++ pkg-config python3  # build tools
   python3-matplotlib                        # the labs' charts
   libtinyobjloader-dev                      # OBJ loading
-  libstb-dev                                # PNG/JPG in, PNG out, Perlin noise
+  libstb-dev                                # PNG/BMP in, PNG out, Perlin noise
+  libturbojpeg0-dev                         # JPEG in (libjpeg-turbo)
   libcli11-dev                              # command lines
   libgtest-dev                              # unit tests
   libbenchmark-dev                          # the labs' timing

@@ -2,6 +2,7 @@
 
 #include <stb_image.h>
 #include <stb_image_write.h>
+#include <turbojpeg.h>
 
 #include <algorithm>
 #include <cctype>
@@ -55,18 +56,10 @@ std::uint64_t fewest_bytes(std::span<const std::uint8_t> bytes, int width, int h
     return (w + 7) / 8 * ((h + 7) / 8) / 8;                                                  // JPEG
 }
 
-Image load_with_stb(const std::filesystem::path& path) {
-    const std::vector<std::uint8_t> bytes = read_file(path);
-    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw FileError(path, "file too large");
-    // stb_image reads a dozen formats; rasterlab's textures come as PNG, JPEG
-    // or BMP (and TGA, read by our own codec). The others (PSD, GIF, HDR, PIC,
-    // PNM) are refused by their signature before stb sees them: less decoder
-    // code reachable from a hostile file.
-    if (!is_png_jpeg_or_bmp(bytes)) throw FileError(path, "not a PNG, JPEG, BMP or TGA file");
-    int width = 0, height = 0, channels = 0;
-    if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
-                               &channels))
-        throw FileError(path, std::string("not a readable image: ") + stbi_failure_reason());
+// Refuses a width x height image that the file's bytes cannot hold, before
+// the decoder allocates it.
+void check_claimed_size(const std::filesystem::path& path, std::span<const std::uint8_t> bytes,
+                        int width, int height, int channels) {
     try {
         check_dimensions(width, height);  // refuse absurd sizes before decoding
     } catch (const std::invalid_argument& e) {
@@ -78,21 +71,64 @@ Image load_with_stb(const std::filesystem::path& path) {
                                   std::to_string(height) + " image in this format needs at least " +
                                   std::to_string(fewest) + " bytes, the file has " +
                                   std::to_string(bytes.size()));
+}
+
+// Rows of RGBA bytes, the top one first, into an image (bottom row first).
+Image from_top_first_rgba(const std::uint8_t* data, int width, int height) {
+    Image image(width, height);
+    for (int y = 0; y < height; ++y) {
+        const std::uint8_t* row = data + static_cast<std::size_t>(height - 1 - y) * width * 4;
+        for (int x = 0; x < width; ++x) {
+            const std::uint8_t* p = row + static_cast<std::size_t>(x) * 4;
+            image.set(x, y, Rgba{p[0], p[1], p[2], p[3]});
+        }
+    }
+    return image;
+}
+
+// JPEG through libjpeg-turbo, not stb_image: on some damaged files stb's
+// decoder reads memory it never wrote, and the same 1 KB file gave four
+// different pictures under four MALLOC_PERTURB_ values
+// (ImageIo.DamagedJpegsDecodeTheSameEveryTime). A stream libjpeg-turbo only
+// warns about (a premature end, corrupt data) is refused too: the same
+// bytes always give the same picture or the same refusal.
+Image load_jpeg(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
+    const std::unique_ptr<void, int (*)(tjhandle)> decoder(tjInitDecompress(), tjDestroy);
+    if (!decoder) throw FileError(path, "cannot start the JPEG decoder");
+    tjhandle handle = decoder.get();
+    const auto reason = [&] { return std::string(tjGetErrorStr2(handle)); };
+    int width = 0, height = 0, subsampling = 0, colour_space = 0;
+    if (tjDecompressHeader3(handle, bytes.data(), static_cast<unsigned long>(bytes.size()), &width,
+                            &height, &subsampling, &colour_space) != 0)
+        throw FileError(path, "not a readable image: " + reason());
+    check_claimed_size(path, bytes, width, height, 3);
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
+    if (tjDecompress2(handle, bytes.data(), static_cast<unsigned long>(bytes.size()), rgba.data(),
+                      width, 0, height, TJPF_RGBA, TJFLAG_STOPONWARNING) != 0)
+        throw FileError(path, "cannot decode: " + reason());
+    return from_top_first_rgba(rgba.data(), width, height);
+}
+
+Image load_png_jpeg_or_bmp(const std::filesystem::path& path) {
+    const std::vector<std::uint8_t> bytes = read_file(path);
+    if (bytes.size() > static_cast<std::size_t>(INT_MAX)) throw FileError(path, "file too large");
+    // stb_image reads a dozen formats; rasterlab's textures come as PNG, JPEG
+    // or BMP (and TGA, read by our own codec). The others (PSD, GIF, HDR, PIC,
+    // PNM) are refused by their signature before stb sees them: less decoder
+    // code reachable from a hostile file.
+    if (!is_png_jpeg_or_bmp(bytes)) throw FileError(path, "not a PNG, JPEG, BMP or TGA file");
+    if (bytes[0] == 0xff) return load_jpeg(path, bytes);
+    int width = 0, height = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                               &channels))
+        throw FileError(path, std::string("not a readable image: ") + stbi_failure_reason());
+    check_claimed_size(path, bytes, width, height, channels);
     std::unique_ptr<stbi_uc, void (*)(void*)> data(
         stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                               &channels, 4),
         stbi_image_free);
     if (!data) throw FileError(path, std::string("cannot decode: ") + stbi_failure_reason());
-    Image image(width, height);
-    // stb_image delivers the top row first; our images are bottom row first.
-    for (int y = 0; y < height; ++y) {
-        const stbi_uc* row = data.get() + static_cast<std::size_t>(height - 1 - y) * width * 4;
-        for (int x = 0; x < width; ++x) {
-            const stbi_uc* p = row + static_cast<std::size_t>(x) * 4;
-            image.set(x, y, Rgba{p[0], p[1], p[2], p[3]});
-        }
-    }
-    return image;
+    return from_top_first_rgba(data.get(), width, height);
 }
 
 void append_bytes(void* context, void* data, int size) {
@@ -122,7 +158,7 @@ void check_extension(const std::filesystem::path& path) {
 Image load_image(const std::filesystem::path& path) {
     try {
         if (lower_extension(path) == ".tga") return read_tga(path);
-        return load_with_stb(path);
+        return load_png_jpeg_or_bmp(path);
     } catch (const std::bad_alloc&) {
         throw FileError(path, "out of memory decoding the image");
     }

@@ -1,5 +1,6 @@
 // Reading and writing images by file extension: .tga through our own codec,
-// PNG/JPG/BMP through stb_image, PNG out through stb_image_write.
+// JPEG through libjpeg-turbo, PNG and BMP through stb_image, PNG out through
+// stb_image_write.
 #pragma once
 
 #include <filesystem>
@@ -9,7 +10,7 @@
 
 namespace rl {
 
-// Reads .tga with read_tga() and anything else stb_image understands.
+// Reads .tga with read_tga(), and PNG, JPEG or BMP by their signatures.
 // Throws FileError (TgaError for TGA files) naming the file and the problem.
 Image load_image(const std::filesystem::path& path);
 
