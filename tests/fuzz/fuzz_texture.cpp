@@ -1,8 +1,7 @@
 // libFuzzer target: loading a texture file as the lessons do, by extension:
 // .tga through our codec, JPEG through libjpeg-turbo, PNG/BMP through
-// stb_image. The first input
-// byte picks the extension; the rest is the file. It is refused with a
-// FileError or loaded into a non-empty image.
+// stb_image. The first input byte picks the extension; the rest is the
+// file. It is refused with a FileError or loaded into a non-empty image.
 // Run: build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture
 #include <unistd.h>
 
