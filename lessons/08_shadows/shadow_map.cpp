@@ -1,5 +1,7 @@
 #include "shadow_map.hpp"
 
+#include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -31,10 +33,27 @@ ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& mode
     perspective::RenderTarget<> target(options.size, options.size, target_options);
     perspective::PipelineOptions pipeline;
     pipeline.cull = options.cull;
+    // At most a thousand layers of the map, and never more work than a
+    // thousand layers of a 2048² map, whatever the map's size.
+    const double texels = static_cast<double>(options.size) * options.size;
+    pipeline.max_overdraw = std::min(pipeline.max_overdraw, options.max_samples / texels);
     for (const normal_mapping::MappedModel& m : models) {
         const perspective::TexturedModel& model = m.lit.model;
-        perspective::draw(perspective::MeshView(model.mesh, model.transform),
-                          DepthProgram{light.view_projection * model.transform}, target, pipeline);
+        try {
+            perspective::draw(perspective::MeshView(model.mesh, model.transform),
+                              DepthProgram{light.view_projection * model.transform}, target,
+                              pipeline);
+        } catch (const perspective::OverdrawError&) {
+            char text[400];
+            std::snprintf(text, sizeof text,
+                          "the shadow map's pass: the triangles' bounding boxes, seen from the "
+                          "light, cover more than %.3g texels, the cap (%.3g layers of this "
+                          "%dx%d map; by default a thousand layers of a 2048x2048 one): refusing "
+                          "to spend minutes on them (the same faces repeated, or long thin faces)",
+                          options.max_samples, options.max_samples / texels, options.size,
+                          options.size);
+            throw perspective::OverdrawError(text);
+        }
     }
     return {light, std::move(*target.depth())};
 }

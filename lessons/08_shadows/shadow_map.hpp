@@ -17,6 +17,12 @@ namespace shadows {
 
 // The largest map a program draws: 8192 x 8192 floats, 256 MiB.
 inline constexpr int kMaxShadowMapSize = 8192;
+// The most texels the shadow map's pass may visit (its triangles' bounding
+// boxes, per model): a thousand layers of a 2048² map, whatever the map's
+// size, and at most a thousand layers of a smaller one. Sized by the map
+// alone, an 8192² map allowed 16 times that: 100 000 copies of one triangle
+// (800 KB of OBJ) are now refused after 17 s at 64x64 with an 8192² map.
+inline constexpr double kMaxShadowPassSamples = 1000.0 * 2048 * 2048;
 
 struct ShadowMapOptions {
     // Texels per side. 2048 is where more stop paying at 800 x 800 (the lab's
@@ -26,6 +32,7 @@ struct ShadowMapOptions {
     float constant_bias = 0;  // added to every stored depth (window depth, 0..1)
     float slope_bias = 1;     // times the triangle's depth change per texel
     perspective::Cull cull = perspective::Cull::back;  // front: store the faces turned away
+    double max_samples = kMaxShadowPassSamples;        // the pass's cap (a test lowers it)
 };
 
 struct ShadowMap {

@@ -362,4 +362,25 @@ TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
     EXPECT_GT(in_shadow, 40) << "the crate's shadow should cover some of the floor (78 pixels)";
 }
 
+// The shadow map's pass is capped in texels visited, whatever the map's
+// size (sized by the map alone, an 8192² map allowed 16 times the work of a
+// 2048² one). The floor's two triangles cover a map fitted to it twice over:
+// under a cap of half a map's texels they are refused, naming the cap.
+TEST(ShadowsTest, TheShadowPassRefusesMoreWorkThanItsCap) {
+    const std::vector<MappedModel> floor = floor_scene(false);
+    ShadowMapOptions options{.size = 256};
+    EXPECT_NO_THROW(map_of(floor, {0, 1, 0}, options));
+    options.max_samples = 0.5 * 256 * 256;
+    try {
+        map_of(floor, {0, 1, 0}, options);
+        ADD_FAILURE() << "a pass over its cap was drawn";
+    } catch (const perspective::OverdrawError& e) {
+        EXPECT_NE(std::string(e.what()).find("shadow map's pass"), std::string::npos) << e.what();
+        EXPECT_NE(
+            std::string(e.what()).find("3.28e+04 texels, the cap (0.5 layers of this 256x256"),
+            std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
