@@ -2,8 +2,11 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <new>
 #include <set>
@@ -134,6 +137,27 @@ bool all_finite(const std::vector<tinyobj::real_t>& values) {
     return true;
 }
 
+// Texture coordinates far from 0 are coarse in a float: at 65536 the step
+// between two floats is 1/128 of the texture, and at 2^24 it is 2 whole
+// periods. The digits are lost when the file is read (the parser keeps
+// floats), so the picture differs from the same coordinates moved towards 0
+// by whole numbers, which `repeat` would draw alike. From 1024 on (a step of
+// 1/8192: an eighth of a texel of a 1024-texel map) it is said.
+void warn_of_coarse_texture_coordinates(const std::vector<vec2>& uvs, const std::string& name,
+                                        std::vector<std::string>& warnings) {
+    float largest = 0;
+    for (const vec2& uv : uvs) largest = std::max({largest, std::abs(uv.x), std::abs(uv.y)});
+    if (largest < kCoarseTextureCoordinate) return;
+    const float step = std::nextafter(largest, std::numeric_limits<float>::infinity()) - largest;
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "%s: texture coordinates reach %g, where a float steps by %g of the texture's "
+                  "width: the file's digits are lost when it is read, and the picture differs "
+                  "from the same coordinates moved by whole numbers towards 0 (do that)",
+                  name.c_str(), static_cast<double>(largest), static_cast<double>(step));
+    warnings.push_back(text);
+}
+
 Mesh convert(const Parsed& parsed, const std::string& name,
              const std::filesystem::path& material_folder, std::vector<std::string>* warnings) {
     if (!parsed.ok) throw MeshError(name, "cannot load OBJ: " + parsed.error);
@@ -160,6 +184,7 @@ Mesh convert(const Parsed& parsed, const std::string& name,
         mesh.uvs.push_back({attrib.texcoords[i], attrib.texcoords[i + 1]});
     for (std::size_t i = 0; i + 2 < attrib.normals.size(); i += 3)
         mesh.normals.push_back({attrib.normals[i], attrib.normals[i + 1], attrib.normals[i + 2]});
+    if (warnings) warn_of_coarse_texture_coordinates(mesh.uvs, name, *warnings);
 
     for (const tinyobj::shape_t& shape : parsed.shapes) {
         const auto& indices = shape.mesh.indices;

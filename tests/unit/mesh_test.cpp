@@ -156,6 +156,25 @@ INSTANTIATE_TEST_SUITE_P(
         return name.substr(0, name.find('.'));
     });
 
+// Texture coordinates far from 0 lose their digits when read (a float at
+// 65536 steps by 1/128 of the texture): the load says so, naming the file
+// and the step; coordinates in the hundreds are kept quietly.
+TEST(Mesh, CoarseTextureCoordinatesAreWarnedOf) {
+    const auto warnings_for = [](const char* vt) {
+        std::vector<std::string> warnings;
+        rl::parse_obj(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + vt + "\nf 1/1 2/1 3/1\n", "",
+                      "far_uv.obj", &warnings);
+        return warnings;
+    };
+    EXPECT_TRUE(warnings_for("vt 100.25 -300.5").empty());
+    const std::vector<std::string> far = warnings_for("vt 65536.3 0.5");
+    ASSERT_EQ(far.size(), 1u);
+    EXPECT_NE(far[0].find("far_uv.obj: texture coordinates reach 65536.3"), std::string::npos)
+        << far[0];
+    EXPECT_NE(far[0].find("steps by 0.0078125 of the texture's width"), std::string::npos)
+        << far[0];
+}
+
 TEST(Mesh, UnknownLinesAndCommentsDoNotStopLoading) {
     std::vector<std::string> warnings;
     const Mesh mesh = rl::parse_obj(

@@ -68,6 +68,9 @@ inline constexpr std::size_t kMaxFaceVertices = 4096;
 // lines name it; files past either bound are skipped with a warning.
 inline constexpr std::uintmax_t kMaxMtlBytes = std::uintmax_t{16} << 20;
 inline constexpr std::size_t kMaxMaterials = 4096;
+// Texture coordinates from this magnitude on are coarse in a float (a step
+// of 1/8192 of the texture at 1024): load_obj() warns of them.
+inline constexpr float kCoarseTextureCoordinate = 1024;
 
 // Loads an OBJ and its MTL files. Throws MeshError naming the file and the
 // problem (with tinyobjloader's own message) for an unreadable or malformed
