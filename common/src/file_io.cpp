@@ -47,14 +47,22 @@ class Descriptor {
 // ---------------------------------------------------------------------------
 // Temporaries left by a process stopped with Ctrl-C or `kill`: the signal
 // handler removes those still registered, then lets the signal take its course.
-// Fixed-size storage, since a signal handler may not allocate.
+// Fixed-size storage, since a signal handler may not allocate. Threads (the
+// Python module saves from several at once) each claim a free slot with a
+// compare-and-swap and free only their own, by its index: no two share a
+// slot, and no thread reads another's name. The handler reads a name only
+// once its slot is marked ready, after the name is complete (a signal taken
+// while another thread frees and refills that very slot could still catch a
+// name half-copied: the window is one memcpy).
 constexpr int kMaxPending = 16;
+enum PendingSlot : int { kFree, kFilling, kReady };
 char g_pending[kMaxPending][PATH_MAX];
-std::atomic<bool> g_pending_used[kMaxPending];
+std::atomic<int> g_pending_state[kMaxPending];
+static_assert(std::atomic<int>::is_always_lock_free, "a signal handler reads the slots");
 
 extern "C" void remove_pending_and_reraise(int signal_number) {
     for (int i = 0; i < kMaxPending; ++i)
-        if (g_pending_used[i].load()) ::unlink(g_pending[i]);
+        if (g_pending_state[i].load() == kReady) ::unlink(g_pending[i]);
     struct sigaction default_action {};
     default_action.sa_handler = SIG_DFL;
     sigaction(signal_number, &default_action, nullptr);
@@ -77,40 +85,46 @@ void install_cleanup_handlers() {
     (void)installed;
 }
 
-// Remembers a temporary for the signal handler. Beyond kMaxPending at once
-// (no program here stages more than three) it is still removed on an error,
-// only not on a signal.
-void register_pending(const std::filesystem::path& temporary) {
+// Remembers a temporary for the signal handler; returns its slot, for
+// unregister_pending(). Beyond kMaxPending at once (no program here stages
+// more than three) it returns -1: the temporary is still removed on an
+// error, only not on a signal.
+int register_pending(const std::filesystem::path& temporary) {
     install_cleanup_handlers();
     const std::string& text = temporary.native();
-    if (text.size() >= PATH_MAX) return;
+    if (text.size() >= PATH_MAX) return -1;
     for (int i = 0; i < kMaxPending; ++i) {
-        if (g_pending_used[i].load()) continue;
+        int expected = kFree;
+        if (!g_pending_state[i].compare_exchange_strong(expected, kFilling)) continue;
         std::memcpy(g_pending[i], text.c_str(), text.size() + 1);
-        g_pending_used[i].store(true);
-        return;
+        g_pending_state[i].store(kReady);
+        return i;
     }
+    return -1;
 }
 
-void unregister_pending(const std::filesystem::path& temporary) {
-    for (int i = 0; i < kMaxPending; ++i)
-        if (g_pending_used[i].load() && temporary.native() == g_pending[i])
-            g_pending_used[i].store(false);
+void unregister_pending(int slot) {
+    if (slot >= 0) g_pending_state[slot].store(kFree);
 }
 
-void remove_temporary(const std::filesystem::path& temporary) {
+void remove_temporary(const std::filesystem::path& temporary, int slot) {
     ::unlink(temporary.c_str());
-    unregister_pending(temporary);
+    unregister_pending(slot);
 }
 
 // ".rasterlab-tmp-<6 random letters>-<target name>", cut so that it is no
 // longer than the longest name a folder holds (255 bytes here) even when the
-// target's own name is that long.
+// target's own name is that long. One generator for the process, behind a
+// lock: threads save at once.
 std::filesystem::path temporary_beside(const std::filesystem::path& target) {
+    static std::mutex random_mutex;
     static std::mt19937_64 random{std::random_device{}()};
     static constexpr char letters[] = "abcdefghijklmnopqrstuvwxyz0123456789";
     std::string name = kTemporaryPrefix;
-    for (int i = 0; i < 6; ++i) name += letters[random() % (sizeof letters - 1)];
+    {
+        const std::lock_guard<std::mutex> lock(random_mutex);
+        for (int i = 0; i < 6; ++i) name += letters[random() % (sizeof letters - 1)];
+    }
     name += '-';
     name += target.filename().string();
     constexpr std::size_t kNameMax = 255;
@@ -274,7 +288,7 @@ void OutputFiles::check(const std::filesystem::path& path) {
 }
 
 OutputFiles::~OutputFiles() {
-    for (const Staged& s : staged_) remove_temporary(s.temporary);
+    for (const Staged& s : staged_) remove_temporary(s.temporary, s.pending);
 }
 
 void OutputFiles::stage(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
@@ -299,7 +313,7 @@ void OutputFiles::stage(const std::filesystem::path& path, std::span<const std::
             throw FileError(path, "cannot open for writing: " + errno_text());
     }
     if (raw_fd < 0) throw FileError(path, "cannot create a temporary file beside it");
-    register_pending(s.temporary);
+    s.pending = register_pending(s.temporary);
     Descriptor fd(raw_fd);
     try {
         if (exists && ::fchmod(fd.get(), mode) != 0)
@@ -307,7 +321,7 @@ void OutputFiles::stage(const std::filesystem::path& path, std::span<const std::
         write_all(fd.get(), bytes, path);
         if (::close(fd.release()) != 0) throw FileError(path, "write failed: " + errno_text());
     } catch (...) {
-        remove_temporary(s.temporary);
+        remove_temporary(s.temporary, s.pending);
         throw;
     }
     staged_.push_back(std::move(s));
@@ -323,7 +337,7 @@ void OutputFiles::commit() {
             staged_.erase(staged_.begin(), staged_.begin() + static_cast<std::ptrdiff_t>(i));
             throw FileError(s.requested, problem);
         }
-        unregister_pending(s.temporary);
+        unregister_pending(s.pending);
     }
     staged_.clear();
 }

@@ -13,7 +13,7 @@ namespace py_rl {
 void bind_lesson00(py::module_ m) {
     m.def(
         "test_card",
-        [](int width, int height, const std::string& misread) {
+        [](Int<"width"> width, Int<"height"> height, const std::string& misread) {
             check_size(width, height);
             const auto mistake = choice("--misread", misread, lesson00::kMisreadings);
             Result r;

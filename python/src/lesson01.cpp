@@ -12,7 +12,7 @@ namespace py_rl {
 void bind_lesson01(py::module_ m) {
     m.def(
         "draw",
-        [](py::object model, int width, int height, const std::string& method) {
+        [](py::object model, Int<"width"> width, Int<"height"> height, const std::string& method) {
             check_size(width, height);
             const auto line = choice("--method", method, lines::kLineMethods);
             const std::string path =
@@ -20,6 +20,7 @@ void bind_lesson01(py::module_ m) {
             Result r;
             py::gil_scoped_release unlocked;
             const rl::Mesh mesh = rl::load_obj(path, &r.warnings);
+            check_signals();
             r.colour = rl::Image(width, height, rl::kBackground);
             r.count("edges", lines::draw_wireframe(r.colour, mesh, lines::kWireColour, line));
             return r;

@@ -16,8 +16,8 @@ void bind_lesson02(py::module_ m) {
     const triangles::FlatOptions defaults;
     m.def(
         "draw",
-        [](py::object model, int width, int height, const std::string& raster,
-           const std::vector<double>& light, bool no_cull, bool test_image, bool overdraw,
+        [](py::object model, Int<"width"> width, Int<"height"> height, const std::string& raster,
+           const Numbers<"light">& light, bool no_cull, bool test_image, bool overdraw,
            bool owners) {
             check_size(width, height);
             triangles::FlatOptions options;
@@ -38,6 +38,7 @@ void bind_lesson02(py::module_ m) {
                 r.colour = triangles::three_triangles(options.method);
             } else {
                 const rl::Mesh mesh = rl::load_obj(path, &r.warnings);
+                check_signals();
                 r.colour = rl::Image(width, height, rl::kBackground);
                 const triangles::DrawCounts counts =
                     triangles::draw_flat_shaded(r.colour, mesh, options);

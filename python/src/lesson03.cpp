@@ -18,7 +18,7 @@ namespace py_rl {
 void bind_lesson03(py::module_ m) {
     m.def(
         "render",
-        [](py::object model, int width, int height, const std::string& hsr,
+        [](py::object model, Int<"width"> width, Int<"height"> height, const std::string& hsr,
            const std::string& scene_name) {
             check_size(width, height);
             const auto method = choice("--hsr", hsr, zbuffer::kHsrMethods);
@@ -30,6 +30,7 @@ void bind_lesson03(py::module_ m) {
             std::size_t culled = 0;
             const std::vector<zbuffer::SceneTriangle> scene =
                 zbuffer::program_scene(which, placements, width, height, r.warnings, culled);
+            check_signals();
             zbuffer::Frame frame(width, height);
             zbuffer::render(method, scene, frame);
             r.count("drawn", scene.size() - frame.refused);
@@ -45,8 +46,8 @@ void bind_lesson03(py::module_ m) {
         "and soup) with hidden surfaces removed by hsr; depth is the z-buffer");
     m.def(
         "zfight",
-        [](int width, int height, const std::string& format_name, double distance, double near,
-           double far, bool fitted) {
+        [](Int<"width"> width, Int<"height"> height, const std::string& format_name,
+           Real<"distance"> distance, Real<"near"> near, Real<"far"> far, bool fitted) {
             check_size(width, height);
             const auto format = choice("--format", format_name, zbuffer::kDepthFormats);
             zbuffer::TwoPlanes planes;
@@ -54,7 +55,7 @@ void bind_lesson03(py::module_ m) {
             const double positive = std::numeric_limits<double>::denorm_min();
             zbuffer::DepthRange range{finite("--near", near, positive),
                                       finite("--far", far, positive)};
-            planes.size = std::min(width, height);
+            planes.size = std::min<int>(width, height);
             if (fitted) range = zbuffer::fitted_range(planes);
             if (!(range.near_plane > 0 && range.near_plane < range.far_plane))
                 throw py::value_error("need 0 < near < far");

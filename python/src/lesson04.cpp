@@ -16,9 +16,9 @@ void bind_lesson04(py::module_ m) {
     const textures::TexturedOptions defaults;
     m.def(
         "draw",
-        [](py::object model, int width, int height, const std::string& filter,
-           const std::string& wrap, double uv_scale, double uv_offset,
-           const std::vector<double>& turn, double scale, bool no_light) {
+        [](py::object model, Int<"width"> width, Int<"height"> height, const std::string& filter,
+           const std::string& wrap, Real<"uv_scale"> uv_scale, Real<"uv_offset"> uv_offset,
+           const Numbers<"turn">& turn, Real<"scale"> scale, bool no_light) {
             check_size(width, height);
             textures::TexturedOptions options;
             options.sampler.filter = choice("--filter", filter, textures::kFilters);
@@ -40,9 +40,12 @@ void bind_lesson04(py::module_ m) {
             Result r;
             py::gil_scoped_release unlocked;
             const rl::Mesh mesh = rl::load_obj(path, &r.warnings);
+            check_signals();
             const rl::Texture diffuse =
                 rl::load_texture(mesh, 0, rl::TextureRole::diffuse, r.warnings);
+            check_signals();
             const textures::MipChain chain(diffuse.image);
+            check_signals();
             zbuffer::Frame frame(width, height);
             const triangles::DrawCounts counts =
                 textures::draw_textured(frame, mesh, chain, options);

@@ -14,9 +14,10 @@ void bind_lesson05(py::module_ m) {
     const perspective::RenderOptions defaults;
     m.def(
         "render",
-        [](py::object models, std::optional<Camera> camera, const std::vector<double>& light,
-           int width, int height, const std::string& clip, const std::string& interpolation,
-           const std::string& lod, const std::string& filter, bool no_light) {
+        [](py::object models, std::optional<Camera> camera, const Numbers<"light">& light,
+           Int<"width"> width, Int<"height"> height, const std::string& clip,
+           const std::string& interpolation, const std::string& lod, const std::string& filter,
+           bool no_light) {
             check_size(width, height);
             perspective::RenderOptions options;
             options.pipeline.clip = choice("--clip", clip, perspective::kClipModes);
@@ -30,6 +31,7 @@ void bind_lesson05(py::module_ m) {
             Result r;
             py::gil_scoped_release unlocked;
             const auto scene = perspective::load_scene(view, width, height, r.warnings);
+            check_signals();
             perspective::ColourTarget frame = perspective::colour_target(width, height);
             const perspective::PipelineCounts counts =
                 perspective::render(scene.models, scene.camera, options, frame);

@@ -14,9 +14,9 @@ void bind_lesson06(py::module_ m) {
     const shading::ShadingOptions defaults;
     m.def(
         "render",
-        [](py::object models, std::optional<Camera> camera, const std::vector<double>& light,
-           int width, int height, const std::string& shading_model, const std::string& weighting,
-           double shininess, bool naive, bool one_light) {
+        [](py::object models, std::optional<Camera> camera, const Numbers<"light">& light,
+           Int<"width"> width, Int<"height"> height, const std::string& shading_model,
+           const std::string& weighting, Real<"shininess"> shininess, bool naive, bool one_light) {
             check_size(width, height);
             shading::ShadingOptions options;
             options.model = choice("--shading", shading_model, shading::kShadingModels);
@@ -31,6 +31,7 @@ void bind_lesson06(py::module_ m) {
             py::gil_scoped_release unlocked;
             const auto scene =
                 shading::load_scene(view, options.output, weights, width, height, r.warnings);
+            check_signals();
             std::size_t computed = 0;
             for (const shading::LitModel& lit : scene.models) computed += lit.computed_normals;
             perspective::ColourTarget frame = perspective::colour_target(width, height);

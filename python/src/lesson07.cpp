@@ -15,15 +15,17 @@ void bind_lesson07(py::module_ m) {
     const normal_mapping::MappedView defaults;
     m.def(
         "render",
-        [](py::object models, std::optional<Camera> camera, const std::vector<double>& light,
-           int width, int height, const std::string& normal_map, const std::string& tangents,
-           const std::string& specular, const std::string& filter, bool naive, bool one_light) {
+        [](py::object models, std::optional<Camera> camera, const Numbers<"light">& light,
+           Int<"width"> width, Int<"height"> height, const std::string& normal_map,
+           const std::string& tangents, const std::string& specular, const std::string& filter,
+           bool naive, bool one_light) {
             check_size(width, height);
             normal_mapping::MappedView request = mapped_view(
                 models, camera, light, normal_map, tangents, specular, filter, naive, one_light);
             Result r;
             py::gil_scoped_release unlocked;
             const auto scene = normal_mapping::load_scene(request, width, height, r.warnings);
+            check_signals();
             perspective::ColourTarget frame = perspective::colour_target(width, height);
             const perspective::PipelineCounts counts =
                 normal_mapping::render(scene.models, scene.camera, request.options, frame);

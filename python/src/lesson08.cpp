@@ -15,13 +15,14 @@ void bind_lesson08(py::module_ m) {
     const shadows::ShadowOptions defaults;
     m.def(
         "render",
-        [](py::object models, std::optional<Camera> camera, const std::vector<double>& light,
-           int width, int height, const std::string& light_type,
-           const std::optional<std::vector<double>>& light_position, double cone,
-           int shadow_map_size, double bias, double slope_bias, double normal_offset,
-           const std::string& filter, const std::string& fit, const std::string& map_faces,
-           const std::string& show, const std::string& normal_map, const std::string& tangents,
-           const std::string& specular, const std::string& texture_filter, bool one_light) {
+        [](py::object models, std::optional<Camera> camera, const Numbers<"light">& light,
+           Int<"width"> width, Int<"height"> height, const std::string& light_type,
+           const std::optional<Numbers<"light_position">>& light_position, Real<"cone"> cone,
+           Int<"shadow_map_size"> shadow_map_size, Real<"bias"> bias, Real<"slope_bias"> slope_bias,
+           Real<"normal_offset"> normal_offset, const std::string& filter, const std::string& fit,
+           const std::string& map_faces, const std::string& show, const std::string& normal_map,
+           const std::string& tangents, const std::string& specular,
+           const std::string& texture_filter, bool one_light) {
             check_size(width, height);
             shadows::ShadowOptions options;
             options.light.type = choice("--light-type", light_type, shadows::kLightTypes);
@@ -51,10 +52,12 @@ void bind_lesson08(py::module_ m) {
             py::gil_scoped_release unlocked;
             shadows::set_lights(options, view, one_light);
             const auto scene = shadows::load_scene(view, frames, width, height, r.warnings);
+            check_signals();
             shadows::place_spot(options, shadows::scene_box(scene.models), position);
             const float aspect = static_cast<float>(width) / static_cast<float>(height);
             const shadows::ShadowMap map =
                 shadows::shadow_map_for(scene.models, scene.camera, aspect, options);
+            check_signals();
             perspective::ColourTarget frame = perspective::colour_target(width, height);
             const perspective::PipelineCounts counts =
                 shadows::render(scene.models, scene.camera, options, map, frame);

@@ -3,6 +3,10 @@
 // is the program's and the lab's: it is not timed from Python.)
 #include <pybind11/stl.h>
 
+#include <chrono>
+#include <vector>
+
+#include "12_fast/orbit.hpp"
 #include "12_fast/renderer.hpp"
 #include "12_fast/tile_kernels.hpp"
 #include "keywords.hpp"
@@ -12,30 +16,55 @@
 
 namespace py_rl {
 
+namespace {
+
+// fast::render_orbit() with a look for Ctrl-C between frames (every 50 ms at
+// most): the same frames, the same timers around each.
+fast::OrbitRun orbit_run(fast::Renderer& renderer, const perspective::Camera& camera, int frames) {
+    std::vector<double> times;
+    fast::OrbitRun run;
+    for (int i = 0; i < frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        run.counts = renderer.render(fast::orbit(camera, i, frames));
+        times.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
+        if (i + 1 < frames) check_signals(50);
+    }
+    run.median_ms = fast::median_after_first(std::move(times));
+    return run;
+}
+
+}  // namespace
+
 void bind_lesson12(py::module_ m) {
     const normal_mapping::MappedView mapped;
     const fast::FastOptions defaults;
     m.def(
         "render",
-        [](py::object models, std::optional<Camera> camera, const std::vector<double>& light,
-           int width, int height, const std::string& normal_map, const std::string& tangents,
-           const std::string& specular, const std::string& filter, bool naive, bool one_light,
-           int frames, int threads, int tile_size) {
+        [](py::object models, std::optional<Camera> camera, const Numbers<"light">& light,
+           Int<"width"> width, Int<"height"> height, const std::string& normal_map,
+           const std::string& tangents, const std::string& specular, const std::string& filter,
+           bool naive, bool one_light, Int<"frames"> frames, Int<"threads"> threads,
+           Int<"tile_size"> tile_size) {
             check_size(width, height);
             normal_mapping::MappedView request = mapped_view(
                 models, camera, light, normal_map, tangents, specular, filter, naive, one_light);
             in_range("--frames", frames, 1, 1000);
             in_range("--threads", threads, 0, 256);
             in_range("--tile-size", tile_size, 8, 1024);
+            fast::check_frames(frames, width, height);
             fast::FastOptions options;
             options.threads = threads;
             options.tile_size = tile_size;
             Result r;
             py::gil_scoped_release unlocked;
             const auto scene = normal_mapping::load_scene(request, width, height, r.warnings);
+            check_signals();
             options.render = request.options;  // with the lighting and output load_scene set
             fast::Renderer renderer(scene.models, width, height, options);
-            const fast::OrbitRun run = fast::render_orbit(renderer, scene.camera, frames);
+            check_signals();
+            const fast::OrbitRun run = orbit_run(renderer, scene.camera, frames);
             r.colour = renderer.frame();
             r.count("frames", frames);
             r.count("median_ms", run.median_ms);

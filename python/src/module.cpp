@@ -2,8 +2,8 @@
 // it): every lesson's renderer from Python, pictures as numpy arrays. The
 // API is documented in docs/python.md.
 #include <pybind11/pybind11.h>
-#include <pybind11/stl/filesystem.h>
 
+#include "keywords.hpp"
 #include "lessons.hpp"
 #include "rasterlab/file_io.hpp"
 #include "rasterlab/image_io.hpp"
@@ -15,20 +15,25 @@ namespace py = pybind11;
 PYBIND11_MODULE(_core, m) {
     m.doc() = "rasterlab: a CPU software rasterizer built one stage per lesson (C++ core)";
     // A file the lessons cannot read or write: OSError, with the message the
-    // programs print (it starts with the file's path). std::invalid_argument
-    // (a refused option) already becomes ValueError.
+    // programs print (it starts with the file's path); a refused option
+    // (std::invalid_argument): ValueError. A file name that is not UTF-8
+    // shows its bytes as \xff escapes (PyErr_SetString would have left the
+    // message empty).
     py::register_exception_translator([](std::exception_ptr p) {
         try {
             if (p) std::rethrow_exception(p);
         } catch (const rl::FileError& e) {
-            PyErr_SetString(PyExc_OSError, e.what());
+            py_rl::set_error(PyExc_OSError, e.what());
+        } catch (const std::invalid_argument& e) {
+            py_rl::set_error(PyExc_ValueError, e.what());
         }
     });
+    py_rl::note_main_thread();
     py_rl::bind_result(m);
     py_rl::bind_scene_args(m);
     m.def(
         "read_image",
-        [](const std::filesystem::path& path) {
+        [](const py_rl::Path& path) {
             py_rl::Result r;
             {
                 py::gil_scoped_release unlocked;

@@ -2,8 +2,9 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
+#include "keywords.hpp"
+#include "rasterlab/file_io.hpp"
 #include "rasterlab/image_io.hpp"
 
 namespace py_rl {
@@ -65,17 +66,31 @@ void bind_result(py::module_& m) {
             "counts",
             [](const Result& r) {
                 py::dict d;
-                for (const auto& [name, value] : r.counts) d[py::str(name)] = py::cast(value);
+                for (const auto& [name, value] : r.counts)
+                    d[py::str(name)] = std::holds_alternative<std::string>(value)
+                                           ? text(std::get<std::string>(value))  // a file name
+                                           : py::cast(value);
                 return d;
             },
             "What the program prints about the run (faces drawn, fragments shaded, ...)")
-        .def_readonly("warnings", &Result::warnings,
-                      "The warnings the program would have printed (a missing texture, ...)")
+        .def_property_readonly(
+            "warnings",
+            [](const Result& r) {
+                py::list out;
+                for (const std::string& w : r.warnings) out.append(text(w));
+                return out;
+            },
+            "The warnings the program would have printed (a missing texture, ...)")
         .def(
             "save",
-            [](const Result& r, const std::filesystem::path& path) {
+            [](const Result& r, const Path& path) {
                 py::gil_scoped_release unlocked;
-                rl::save_image(path, r.colour);
+                // The path first, as the programs check -o: a folder or a
+                // device is named as such, not as "unknown image extension ''".
+                rl::check_image_output(path);
+                const std::vector<std::uint8_t> bytes = rl::encode_image(path, r.colour);
+                check_signals();  // Ctrl-C while encoding: nothing is written
+                rl::write_file_atomically(path, bytes);
             },
             py::arg("path"),
             "Writes the picture as the programs do (.tga or .png by the extension; never over "

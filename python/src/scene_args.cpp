@@ -2,17 +2,16 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
-#include <pybind11/stl/filesystem.h>
 
 #include "keywords.hpp"
 #include "rasterlab/texture_files.hpp"
 
 namespace py_rl {
 
-std::string model_path(py::handle model) {
+std::string model_path(py::handle model, const char* keyword) {
     if (py::isinstance<Mesh>(model)) return model.cast<const Mesh&>().mesh.source.string();
     if (py::isinstance<py::str>(model) || py::hasattr(model, "__fspath__"))
-        return model.cast<std::filesystem::path>().string();
+        return fs_path(model, keyword).string();
     throw py::type_error("a model is a path (str or os.PathLike) or a rasterlab.Mesh, not " +
                          std::string(py::str(py::type::of(model).attr("__name__"))));
 }
@@ -21,15 +20,15 @@ std::vector<std::string> model_paths(py::handle models) {
     if (models.is_none()) return {};
     if (py::isinstance<Mesh>(models) || py::isinstance<py::str>(models) ||
         py::hasattr(models, "__fspath__"))
-        return {model_path(models)};
+        return {model_path(models, "models")};
     if (py::isinstance<py::bytes>(models) || !py::isinstance<py::iterable>(models))
-        return {model_path(models)};  // (which says what a model is)
+        return {model_path(models, "models")};  // (which says what a model is)
     std::vector<std::string> paths;
     for (py::handle m : models) {
         if (paths.size() == perspective::kMaxModels)
             throw py::value_error("--model: at most " + std::to_string(perspective::kMaxModels) +
                                   " models, each loaded whole");
-        paths.push_back(model_path(m));
+        paths.push_back(model_path(m, "models"));
     }
     // The programs cannot be asked for no model: None is the default scene.
     if (paths.empty())
@@ -76,8 +75,8 @@ py::array_t<float> rows_of(const std::vector<V>& values) {
     return out;
 }
 
-std::optional<std::vector<float>> point(const char* option,
-                                        const std::optional<std::vector<double>>& p) {
+template <class Numbers>
+std::optional<std::vector<float>> point(const char* option, const std::optional<Numbers>& p) {
     if (!p) return std::nullopt;
     return three(option, *p);
 }
@@ -94,7 +93,7 @@ void bind_scene_args(py::module_& m) {
     py::class_<Mesh>(m, "Mesh",
                      "An OBJ file as rasterlab reads it (triangulated), with its material's "
                      "texture files. Pass it (or its path) to any lesson's render function.")
-        .def_property_readonly("path", [](const Mesh& s) { return s.mesh.source.string(); })
+        .def_property_readonly("path", [](const Mesh& s) { return path_text(s.mesh.source); })
         .def_property_readonly(
             "positions", [](const Mesh& s) { return rows_of<rl::vec3, 3>(s.mesh.positions); },
             "N x 3 float32 vertex positions (a copy)")
@@ -128,24 +127,35 @@ void bind_scene_args(py::module_& m) {
                     {"specular", rl::TextureRole::specular}};
                 for (const auto& [name, role] : roles)
                     if (const auto path = rl::find_texture(s.mesh, 0, role))
-                        found[name] = path->string();
+                        found[name] = path_text(*path);
                 return found;
             },
             "The texture files the lessons would use for the first material, by role")
-        .def_readonly("warnings", &Mesh::warnings)
+        .def_property_readonly("warnings",
+                               [](const Mesh& s) {
+                                   py::list out;
+                                   for (const std::string& w : s.warnings) out.append(text(w));
+                                   return out;
+                               })
         .def("__repr__", [](const Mesh& s) {
-            return "<rasterlab.Mesh " + s.mesh.source.string() + ": " +
-                   std::to_string(s.mesh.faces.size()) + " triangles>";
+            return text("<rasterlab.Mesh " + s.mesh.source.string() + ": " +
+                        std::to_string(s.mesh.faces.size()) + " triangles>");
         });
 
     m.def(
         "load_mesh",
-        [](const std::filesystem::path& path) {
+        [](const Path& path) {
             Mesh out;
             {
                 py::gil_scoped_release unlocked;
-                // Kept whole, so that the Mesh still finds its file after a chdir.
-                out.mesh = rl::load_obj(std::filesystem::absolute(path), &out.warnings);
+                // Kept whole, so that the Mesh still finds its file after a
+                // chdir. '' stays '' (the programs' "no such file", not
+                // "cannot make absolute path"), and so does a path when the
+                // working folder is gone.
+                std::error_code ec;
+                std::filesystem::path whole = path;
+                if (!path.empty()) whole = std::filesystem::absolute(path, ec);
+                out.mesh = rl::load_obj(ec ? std::filesystem::path(path) : whole, &out.warnings);
             }
             return out;
         },
@@ -156,9 +166,9 @@ void bind_scene_args(py::module_& m) {
     py::class_<Camera>(m, "Camera",
                        "Lesson 05's camera options. What is None is framed to fit the scene, "
                        "as the programs do without --eye, --target, --near or --far.")
-        .def(py::init([](std::optional<std::vector<double>> eye,
-                         std::optional<std::vector<double>> target, std::vector<double> up,
-                         double fov, std::optional<double> near, std::optional<double> far) {
+        .def(py::init([](std::optional<Numbers<"eye">> eye, std::optional<Numbers<"target">> target,
+                         Numbers<"up"> up, Real<"fov"> fov, std::optional<Real<"near">> near,
+                         std::optional<Real<"far">> far) {
                  Camera c;
                  c.eye = point("--eye", eye).value_or(std::vector<float>{});
                  c.target = point("--target", target).value_or(std::vector<float>{});

@@ -37,8 +37,9 @@ struct Camera {
     std::optional<float> near, far;
 };
 
-// A model given as a path (str or os.PathLike) or a Mesh.
-std::string model_path(py::handle model);
+// A model given as a path (str or os.PathLike) or a Mesh; `keyword` names
+// the argument in a refusal (a path with a NUL in it).
+std::string model_path(py::handle model, const char* keyword = "model");
 
 // None (the lesson's default scene), one model or a sequence of them (at most
 // perspective::kMaxModels, as --model).

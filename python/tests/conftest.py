@@ -41,12 +41,14 @@ class Programs:
                        check=True, capture_output=True, text=True)
         return rasterlab.read_image(str(out))
 
-    def error(self, lesson, *args):
+    def error(self, lesson, *args, output=None):
         """The message the program refuses these arguments with (its first line,
-        without the program's name)."""
-        out = self.tmp / "refused.tga"
+        without the program's name), with `-o output` (by default a file in a
+        scratch folder). Bytes that are not UTF-8 (a file name) read as \\xff
+        escapes, as the module shows them."""
+        out = self.tmp / "refused.tga" if output is None else output
         run = subprocess.run([str(program_path(lesson)), "-o", str(out), *map(str, args)],
-                             capture_output=True, text=True)
+                             capture_output=True, text=True, errors="backslashreplace")
         assert run.returncode != 0, f"{PROGRAMS[lesson]} accepted {args}"
         first = run.stderr.splitlines()[0]
         prefix = f"{PROGRAMS[lesson]}: error: "

@@ -1,7 +1,10 @@
 """What the programs refuse, Python refuses too: the same message, as
 ValueError (a bad option) or OSError (a file), and never a crash."""
 
+import os
 import pathlib
+import re
+import shutil
 
 import pytest
 
@@ -120,3 +123,116 @@ def test_spot_options_need_a_spot_light(programs):
         programs.error("08", "--light-position", 1, 2, 3)
     assert refused(ValueError, lambda: rasterlab.lesson08.render(cone=30)) == \
         programs.error("08", "--cone", 30)
+
+
+# --- paths -------------------------------------------------------------------
+
+def test_a_path_that_is_not_utf8_is_named_in_the_message(programs, tmp_path):
+    # A file name that is not UTF-8, as a str (os.fsdecode) and as bytes. The
+    # message was empty (PyErr_SetString could not decode it); now it is the
+    # program's, its bytes shown as \xff escapes.
+    missing = tmp_path / os.fsdecode(b"\xff.obj")
+    expected = programs.error("02", "-m", missing)
+    assert expected == f"{tmp_path}/\\xff.obj: no such file"
+    assert refused(OSError, lambda: rasterlab.load_mesh(missing)) == expected
+    assert refused(OSError, lambda: rasterlab.load_mesh(os.fsencode(missing))) == expected
+    assert refused(OSError, lambda: rasterlab.lesson02.draw(missing)) == expected
+    assert refused(OSError, lambda: rasterlab.lesson05.render([str(missing)])) == \
+        programs.error("05", "-m", missing)
+    image = tmp_path / os.fsdecode(b"\xff.png")
+    assert refused(OSError, lambda: rasterlab.read_image(os.fsencode(image))).startswith(
+        f"{tmp_path}/\\xff.png: cannot open for reading")
+
+
+def test_a_model_whose_path_is_not_utf8_loads_and_gives_its_path_back(tmp_path):
+    folder = tmp_path / os.fsdecode(b"\xe9t\xe9")  # Latin-1 "ete", not UTF-8
+    folder.mkdir()
+    for name in ("crate.obj", "crate.mtl", "crate_nm_tangent.tga", "crate_spec.tga"):
+        shutil.copy(OBJ / name, folder)  # crate_diffuse.tga missing: a warning naming it
+    crate = rasterlab.load_mesh(folder / "crate.obj")
+    assert crate.path == str(folder / "crate.obj")  # os.fsdecode's str: the same file
+    assert rasterlab.load_mesh(crate.path).faces.shape == crate.faces.shape
+    assert "\\xe9t\\xe9" in repr(crate)
+    r = rasterlab.lesson04.draw(crate, width=16, height=16)
+    assert r.warnings and "\\xe9t\\xe9/crate_diffuse.tga" in r.warnings[0]
+    r.save(folder / "out.png")
+    assert (folder / "out.png").stat().st_size > 0
+
+
+def test_an_empty_path_is_no_such_file(programs):
+    # load_mesh('') said "filesystem error: cannot make absolute path".
+    assert refused(OSError, lambda: rasterlab.load_mesh("")) == programs.error("02", "-m", "")
+
+
+@pytest.mark.parametrize("call, keyword", [
+    (lambda p: rasterlab.load_mesh(p), "path"),
+    (lambda p: rasterlab.read_image(p), "path"),
+    (lambda p: rasterlab.lesson01.draw(width=8, height=8).save(p), "path"),
+    (lambda p: rasterlab.lesson01.draw(p), "model"),
+    (lambda p: rasterlab.lesson05.render([p]), "models"),
+], ids=["load_mesh", "read_image", "save", "model", "models"])
+def test_a_path_with_a_nul_names_the_nul(tmp_path, call, keyword):
+    # It said "Unable to cast Python instance", or listed the signatures.
+    path = str(tmp_path / "a\0b.obj")
+    assert refused(ValueError, lambda: call(path)) == \
+        f"{keyword}: {path!r} has a NUL character in it, which no file name can hold"
+
+
+@pytest.mark.parametrize("output", ["/dev/null", "folder", "folder/", ""])
+def test_save_checks_its_path_as_the_programs_check_theirs(programs, tmp_path, output):
+    # save('/dev/null') and save('folder/') said "unknown image extension ''".
+    (tmp_path / "folder").mkdir()
+    path = output if output in ("/dev/null", "") else str(tmp_path / output)
+    r = rasterlab.lesson01.draw(width=8, height=8)
+    assert refused(OSError, lambda: r.save(path)) == \
+        programs.error("01", "--width", 8, "--height", 8, output=path)
+
+
+# --- numbers -------------------------------------------------------------------
+
+FUNCTIONS = {
+    "lesson00.test_card": rasterlab.lesson00.test_card, "lesson01.draw": rasterlab.lesson01.draw,
+    "lesson02.draw": rasterlab.lesson02.draw, "lesson03.render": rasterlab.lesson03.render,
+    "lesson03.zfight": rasterlab.lesson03.zfight, "lesson04.draw": rasterlab.lesson04.draw,
+    "lesson05.render": rasterlab.lesson05.render, "lesson06.render": rasterlab.lesson06.render,
+    "lesson07.render": rasterlab.lesson07.render, "lesson08.render": rasterlab.lesson08.render,
+    "lesson12.render": rasterlab.lesson12.render, "Camera": rasterlab.Camera,
+}
+
+
+def numeric_keywords(function):
+    """The keywords a function's signature (as pybind11 writes it) gives as
+    numbers: int, float, or a list of floats."""
+    doc = function.__init__.__doc__ if isinstance(function, type) else function.__doc__
+    signature = doc.splitlines()[0]
+    return re.findall(r"(\w+): (int|float|List\[float\]|Optional\[List\[float\]\]|"
+                      r"Optional\[float\])", signature)
+
+
+NUMERIC = [(name, keyword, kind) for name, f in FUNCTIONS.items()
+           for keyword, kind in numeric_keywords(f)]
+
+
+def test_every_numeric_keyword_is_found():
+    # The signatures' parse finds them all, so that the next test covers
+    # every one: lesson 08's nine (light to normal_offset), 51 in all.
+    assert [k for name, k, _ in NUMERIC if name == "lesson08.render"] == [
+        "light", "width", "height", "light_position", "cone", "shadow_map_size", "bias",
+        "slope_bias", "normal_offset"]
+    assert len(NUMERIC) == 51
+
+
+@pytest.mark.parametrize("name, keyword, kind", NUMERIC, ids=[f"{n}-{k}" for n, k, _ in NUMERIC])
+@pytest.mark.parametrize("flag", [True, False])
+def test_a_bool_is_not_a_number(name, keyword, kind, flag):
+    function = FUNCTIONS[name]
+    # width=True drew a 1x1 picture: a bool is an int to Python.
+    value = [flag, 0.5, 1.0] if "List" in kind else flag
+    assert refused(TypeError, lambda: function(**{keyword: value})) == \
+        f"{keyword}: expected a number, not the bool {flag}"
+
+
+def test_frames_times_pixels_over_the_cap(programs):
+    assert refused(ValueError, lambda: rasterlab.lesson12.render(
+        width=16384, height=16384, frames=1000)) == \
+        programs.error("12", "--width", 16384, "--height", 16384, "--frames", 1000, "--no-peer")

@@ -3,8 +3,14 @@
 #include <unistd.h>
 
 #include <csignal>
+#include <cstdio>
 
+#include <atomic>
+#include <chrono>
 #include <functional>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "rasterlab/file_io.hpp"
 #include "temp_dir.hpp"
@@ -257,6 +263,51 @@ TEST(FileIo, ALinkToAFileNotYetMadeIsThatFile) {
     EXPECT_THROW(staged.stage(file, std::vector<std::uint8_t>{2}), rl::FileError);
 }
 
+// The Python module saves from several threads at once (Result.save releases
+// the GIL). Each write must land whole, in its own file, with no temporary
+// left; under ThreadSanitizer (the tsan preset runs this test) the shared
+// random generator behind the temporaries' names and the registry of pending
+// temporaries were reported as data races.
+TEST(FileIo, ThreadsSavingAtOnceEachWriteTheirWholeFile) {
+    rl_test::TempDir dir;
+    constexpr int kThreads = 8, kWrites = 40;
+    // Distinct contents, large enough that a mix of two would show.
+    const auto content = [](int thread, int write) {
+        std::vector<std::uint8_t> bytes(4096 + static_cast<std::size_t>(thread * 97 + write));
+        for (std::size_t i = 0; i < bytes.size(); ++i)
+            bytes[i] = static_cast<std::uint8_t>(thread * 31 + write * 7 + static_cast<int>(i));
+        return bytes;
+    };
+    const auto file = [&](int thread, int write) {
+        char name[32];
+        std::snprintf(name, sizeof name, "t%d_%d.bin", thread, write);
+        return dir.path() / name;
+    };
+    std::atomic<int> ready{0};
+    std::vector<std::thread> threads;
+    for (int t = 0; t < kThreads; ++t)
+        threads.emplace_back([&, t] {
+            ++ready;
+            while (ready.load() < kThreads) std::this_thread::yield();  // all start together
+            for (int w = 0; w < kWrites; ++w) {
+                rl::write_file_atomically(file(t, w), content(t, w));
+                rl::write_file_atomically(dir.path() / "shared.bin", content(t, w));
+            }
+        });
+    for (std::thread& t : threads) t.join();
+    for (int t = 0; t < kThreads; ++t)
+        for (int w = 0; w < kWrites; ++w)
+            ASSERT_EQ(rl::read_file(file(t, w)), content(t, w))
+                << "thread " << t << ", write " << w;
+    // The shared file is one writer's last write, whole.
+    const std::vector<std::uint8_t> shared = rl::read_file(dir.path() / "shared.bin");
+    bool whole = false;
+    for (int t = 0; t < kThreads; ++t) whole |= shared == content(t, kWrites - 1);
+    EXPECT_TRUE(whole);
+    EXPECT_EQ(entries(dir.path()), static_cast<std::size_t>(kThreads * kWrites + 1));
+    rl::forget_inputs();  // the files read back go with the folder; their inodes may return
+}
+
 TEST(FileIoDeathTest, AKilledWriteLeavesNoTemporary) {
     rl_test::TempDir dir;
     const auto path = dir.path() / "out.tga";
@@ -265,6 +316,30 @@ TEST(FileIoDeathTest, AKilledWriteLeavesNoTemporary) {
             rl::OutputFiles out;
             const std::vector<std::uint8_t> bytes(1000, 1);
             out.stage(path, bytes);
+            std::raise(SIGTERM);
+        },
+        testing::KilledBySignal(SIGTERM), "");
+    EXPECT_EQ(entries(dir.path()), 0u);
+}
+
+// Temporaries staged by several threads at once each get a slot of their
+// own in the registry the signal handler reads: a signal removes them all.
+TEST(FileIoDeathTest, TemporariesStagedByThreadsAtOnceAllGoOnASignal) {
+    rl_test::TempDir dir;
+    EXPECT_EXIT(
+        {
+            constexpr int kThreads = 8;
+            std::atomic<int> staged{0};
+            std::vector<std::thread> threads;
+            for (int t = 0; t < kThreads; ++t)
+                threads.emplace_back([&, t] {
+                    rl::OutputFiles out;
+                    out.stage(dir.path() / ("t" + std::to_string(t) + ".tga"),
+                              std::vector<std::uint8_t>(1000, 1));
+                    ++staged;
+                    for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));  // held
+                });
+            while (staged.load() < kThreads) std::this_thread::yield();
             std::raise(SIGTERM);
         },
         testing::KilledBySignal(SIGTERM), "");

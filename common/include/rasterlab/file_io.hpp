@@ -85,13 +85,16 @@ class OutputFiles {
   private:
     struct Staged {
         std::filesystem::path requested, target, temporary;
+        int pending = -1;  // its slot among the temporaries a signal removes (-1: none)
     };
     void claim(const std::filesystem::path& path);
     std::vector<Staged> staged_;
     std::vector<std::filesystem::path> claimed_;  // every path checked or staged
 };
 
-// One output written alone, all or nothing.
+// One output written alone, all or nothing. Threads may write at once (each
+// through its own OutputFiles): the temporaries' names and the registry the
+// signal handlers read are shared safely.
 void write_file_atomically(const std::filesystem::path& path, std::span<const std::uint8_t> bytes);
 
 // The prefix every temporary file starts with (after a dot), so that one left

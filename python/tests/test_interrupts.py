@@ -1,0 +1,81 @@
+"""Ctrl-C during a render: KeyboardInterrupt between the render's steps
+(loading, lesson 08's shadow map, drawing) and between lesson 12's frames,
+not only when the whole render returns; and an interrupted save writes
+nothing. Each runs in a child process, sent SIGINT as Ctrl-C sends it."""
+
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+CHILD = r"""
+import sys, time, rasterlab
+call = eval("lambda: " + sys.argv[1])
+print("started", flush=True)
+try:
+    call()
+    print("finished", time.monotonic(), flush=True)
+except KeyboardInterrupt:
+    print("interrupted", time.monotonic(), flush=True)
+"""
+
+BOUND = 5.0  # seconds from SIGINT to KeyboardInterrupt: generous
+
+
+def interrupt(expression, after):
+    """Starts `expression` (a render) in a child, sends it SIGINT `after`
+    seconds into the call, and returns how many seconds later the child got
+    KeyboardInterrupt. Fails if it finished instead, or took over BOUND."""
+    child = subprocess.Popen([sys.executable, "-c", CHILD, expression],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert child.stdout.readline().strip() == "started", child.stderr.read()
+        time.sleep(after)
+        sent = time.monotonic()
+        child.send_signal(signal.SIGINT)
+        out, err = child.communicate(timeout=BOUND)
+    except subprocess.TimeoutExpired:
+        child.kill()
+        child.communicate()
+        pytest.fail(f"{expression}: no KeyboardInterrupt within {BOUND} s of SIGINT")
+    word, when = out.split()
+    assert word == "interrupted", f"{expression} ran to its end: {err}"
+    return float(when) - sent
+
+
+def test_ctrl_c_stops_lesson12_between_frames():
+    # 1000 frames of 1024² take about 25 s here; each frame about 25 ms.
+    latency = interrupt("rasterlab.lesson12.render(frames=1000, width=1024, height=1024)", 0.5)
+    assert latency < 1.0
+
+
+def test_ctrl_c_stops_a_render_between_its_steps():
+    # SIGINT while lesson 08 loads its scene (about 0.2 s): the render stops
+    # before the shadow map and the 8192² drawing (about 15 s here).
+    interrupt("rasterlab.lesson08.render(width=8192, height=8192)", 0.05)
+
+
+SAVE = r"""
+import os, pathlib, signal, sys, threading, time, rasterlab
+out = pathlib.Path(sys.argv[1])
+card = rasterlab.lesson00.test_card(width=2048, height=2048)  # its PNG takes 0.7 s to encode
+def ctrl_c():
+    time.sleep(0.1)  # (the main thread is encoding by then, the GIL released)
+    os.kill(os.getpid(), signal.SIGINT)
+threading.Thread(target=ctrl_c).start()
+try:
+    card.save(out / "card.png")
+    print("saved")
+except KeyboardInterrupt:
+    print("interrupted", sorted(p.name for p in out.iterdir()))
+"""
+
+
+def test_an_interrupted_save_writes_nothing(tmp_path):
+    run = subprocess.run([sys.executable, "-c", SAVE, str(tmp_path)], capture_output=True,
+                         text=True, timeout=60)
+    assert run.stdout.split() == ["interrupted", "[]"], run.stdout + run.stderr
+    assert os.listdir(tmp_path) == []
