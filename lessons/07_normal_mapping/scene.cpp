@@ -1,5 +1,8 @@
 #include "scene.hpp"
 
+#include <new>
+#include <stdexcept>
+
 #include "rasterlab/transform.hpp"
 
 namespace normal_mapping {
@@ -7,13 +10,22 @@ namespace normal_mapping {
 MappedModel load_mapped_model(const std::filesystem::path& path, const rl::mat4& transform,
                               TangentMethod method, std::vector<std::string>& warnings,
                               shading::Output output, std::optional<NormalMap> only) {
-    MappedModel m{
-        shading::load_lit_model(path, transform, output, shading::Weighting::angle, warnings),
-        {},
-        {}};
-    m.tangents = corner_tangents(m.lit.model.mesh, m.lit.normals, method);
-    m.maps = load_maps(m.lit.model.mesh, warnings, only);
-    return m;
+    // A loader names its own file when it runs out of memory; what is left
+    // (the normals, the tangents, the maps' sRGB decoding) is named here.
+    try {
+        MappedModel m{
+            shading::load_lit_model(path, transform, output, shading::Weighting::angle, warnings),
+            {},
+            {}};
+        m.tangents = corner_tangents(m.lit.model.mesh, m.lit.normals, method);
+        m.maps = load_maps(m.lit.model.mesh, warnings, only);
+        return m;
+    } catch (const std::bad_alloc&) {
+        throw std::runtime_error(path.string() +
+                                 ": out of memory loading this model, its normals, tangents and "
+                                 "maps (the image's size is not the cause: the model and its "
+                                 "textures are)");
+    }
 }
 
 std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::string>& warnings,
@@ -57,9 +69,16 @@ perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width,
 
 void build_mip_levels(const std::vector<MappedModel>& models) {
     for (const MappedModel& m : models) {
-        m.lit.model.texture.levels();
-        for (const auto* map : {&m.maps.tangent_normals, &m.maps.object_normals, &m.maps.specular})
-            if (*map) (*map)->levels();
+        try {
+            m.lit.model.texture.levels();
+            for (const auto* map :
+                 {&m.maps.tangent_normals, &m.maps.object_normals, &m.maps.specular})
+                if (*map) (*map)->levels();
+        } catch (const std::bad_alloc&) {
+            throw std::runtime_error(m.lit.model.mesh.source.string() +
+                                     ": out of memory building the mip levels of this model's "
+                                     "textures (their size is the cause, not the image's)");
+        }
     }
 }
 

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <new>
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
@@ -117,7 +118,13 @@ struct Renderer::Impl {
             throw std::invalid_argument(
                 "the fast path rasterizes with lesson 02's edge functions only");
         for (const normal_mapping::MappedModel& m : sources) {
-            models.push_back(fast_model(m, o));
+            try {
+                models.push_back(fast_model(m, o));
+            } catch (const std::bad_alloc&) {
+                throw std::runtime_error(m.lit.model.mesh.source.string() +
+                                         ": out of memory packing this model's textures for the "
+                                         "fast path (their size is the cause, not the image's)");
+            }
             placed.push_back(std::nullopt);
             if (const std::optional<rl::mat3> normals =
                     shading::normal_matrix(m.lit.model.transform))
