@@ -1,5 +1,7 @@
 #include "rasterlab/texture_files.hpp"
 
+#include <cstdio>
+
 #include "rasterlab/image_io.hpp"
 
 namespace rl {
@@ -59,6 +61,30 @@ Texture default_texture(TextureRole role) {
     return {Image(1, 1, value), {}, true};
 }
 
+namespace {
+thread_local TexelBudget* open_budget = nullptr;
+}
+
+TexelBudget::TexelBudget(std::uint64_t texels) : limit_(texels) {
+    if (open_budget) return;  // an inner loader: the outer budget counts
+    open_budget = this;
+    opened_ = true;
+}
+
+TexelBudget::~TexelBudget() {
+    if (opened_) open_budget = nullptr;
+}
+
+bool TexelBudget::take(std::uint64_t texels) {
+    if (texels > limit_ - used_) return false;
+    used_ += texels;
+    return true;
+}
+
+TexelBudget* TexelBudget::current() {
+    return open_budget;
+}
+
 Texture load_texture(const Mesh& mesh, int material, TextureRole role,
                      std::vector<std::string>& warnings) {
     const std::optional<std::filesystem::path> path = find_texture(mesh, material, role);
@@ -68,7 +94,20 @@ Texture load_texture(const Mesh& mesh, int material, TextureRole role,
         return default_texture(role);
     }
     try {
-        return {load_image(*path), *path, false};
+        Image image = load_image(*path);
+        const auto texels =
+            static_cast<std::uint64_t>(image.width()) * static_cast<std::uint64_t>(image.height());
+        TexelBudget* budget = TexelBudget::current();
+        if (!budget || budget->take(texels)) return {std::move(image), *path, false};
+        char text[400];
+        std::snprintf(text, sizeof text,
+                      ": its %dx%d texels would bring the scene's textures to %.3g texels, past "
+                      "the budget of %.3g (%.3g GiB as RGBA) for all the maps of all the models "
+                      "together; using a neutral default ",
+                      image.width(), image.height(), static_cast<double>(budget->used() + texels),
+                      static_cast<double>(budget->limit()),
+                      static_cast<double>(budget->limit()) * 4 / (1u << 30));
+        warnings.push_back(path->string() + text + texture_suffix(role) + " texture");
     } catch (const FileError& e) {
         warnings.push_back(std::string(e.what()) + "; using a neutral default " +
                            texture_suffix(role) + " texture");

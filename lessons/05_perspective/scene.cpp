@@ -52,6 +52,7 @@ Camera view_camera(const ViewOptions& view, const Box& box, int width, int heigh
 
 ViewedScene<TexturedModel> load_scene(const ViewOptions& view, int width, int height,
                                       std::vector<std::string>& warnings) {
+    const rl::TexelBudget budget;  // for the textures of all the models together
     ViewedScene<TexturedModel> scene;
     if (view.models.empty()) scene.models = default_scene(warnings);
     for (const std::string& path : view.models)

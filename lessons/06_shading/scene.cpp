@@ -1,4 +1,5 @@
 #include "scene.hpp"
+#include "rasterlab/texture_files.hpp"
 
 #include "rasterlab/transform.hpp"
 
@@ -31,6 +32,7 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
 perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
                                               Weighting weighting, int width, int height,
                                               std::vector<std::string>& warnings) {
+    const rl::TexelBudget budget;  // for the textures of all the models together
     perspective::ViewedScene<LitModel> scene;
     if (view.models.empty()) scene.models = default_scene(output, weighting, warnings);
     for (const std::string& path : view.models)

@@ -1,4 +1,5 @@
 #include "scene.hpp"
+#include "rasterlab/texture_files.hpp"
 
 #include <new>
 #include <stdexcept>
@@ -50,6 +51,7 @@ perspective::Box scene_box(const std::vector<MappedModel>& models) {
 
 perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
                                                  std::vector<std::string>& warnings) {
+    const rl::TexelBudget budget;  // for the textures of all the models together
     RenderOptions& options = request.options;
     options.lighting = shading::default_lighting(perspective::light_direction(request.view));
     if (request.one_light) options.lighting.lights.resize(1);

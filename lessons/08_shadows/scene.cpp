@@ -1,4 +1,5 @@
 #include "scene.hpp"
+#include "rasterlab/texture_files.hpp"
 
 #include <stdexcept>
 
@@ -25,6 +26,7 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
 perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings) {
+    const rl::TexelBudget budget;  // for the textures of all the models together
     perspective::ViewedScene<normal_mapping::MappedModel> scene;
     if (view.models.empty()) scene.models = default_scene(warnings);
     for (const std::string& path : view.models)  // as stored: the identity model matrix

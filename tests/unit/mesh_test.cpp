@@ -175,6 +175,34 @@ TEST(Mesh, CoarseTextureCoordinatesAreWarnedOf) {
         << far[0];
 }
 
+// One budget of texels for all the textures of a scene: a texture past it
+// is kept out (the neutral default, a warning naming the budget), the ones
+// before it are kept, an inner budget joins the outer one, and without a
+// budget nothing is counted.
+TEST(Mesh, TexturesPastTheScenesTexelBudgetAreKeptOut) {
+    const rl::Mesh crate = rl::load_obj(rl::project_model("crate"));
+    std::vector<std::string> warnings;
+    const rl::Texture alone = rl::load_texture(crate, 0, rl::TextureRole::diffuse, warnings);
+    ASSERT_FALSE(alone.is_default);
+    const auto texels = static_cast<std::uint64_t>(alone.image.width()) *
+                        static_cast<std::uint64_t>(alone.image.height());
+    {
+        const rl::TexelBudget budget(texels + texels / 2);  // room for one, not two
+        EXPECT_FALSE(rl::load_texture(crate, 0, rl::TextureRole::diffuse, warnings).is_default);
+        const rl::TexelBudget inner;  // joins the outer budget
+        EXPECT_EQ(rl::TexelBudget::current(), &budget);
+        warnings.clear();
+        EXPECT_TRUE(rl::load_texture(crate, 0, rl::TextureRole::diffuse, warnings).is_default);
+        ASSERT_EQ(warnings.size(), 1u);
+        EXPECT_NE(warnings[0].find("past the budget of"), std::string::npos) << warnings[0];
+        EXPECT_NE(warnings[0].find("for all the maps of all the models together"),
+                  std::string::npos)
+            << warnings[0];
+    }
+    EXPECT_EQ(rl::TexelBudget::current(), nullptr);
+    EXPECT_FALSE(rl::load_texture(crate, 0, rl::TextureRole::diffuse, warnings).is_default);
+}
+
 TEST(Mesh, UnknownLinesAndCommentsDoNotStopLoading) {
     std::vector<std::string> warnings;
     const Mesh mesh = rl::parse_obj(
