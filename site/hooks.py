@@ -74,20 +74,28 @@ def _inside(path: pathlib.Path, folder: pathlib.Path) -> bool:
     return pathlib.Path(os.path.realpath(path)).is_relative_to(folder)
 
 
-def _check_docs_file(path: pathlib.Path) -> None:
-    """Refuses a file of docs/ that is a symbolic link to a file outside the
-    repository, is not a regular file or is over MAX_DOCS_FILE_BYTES."""
-    name = os.path.relpath(path, ROOT)
+def _regular_file_inside(path: pathlib.Path, goes: str, not_a_file: str):
+    """(the resolved path, its stat) of a regular file of the repository;
+    refuses one reached through a symbolic link leading outside it ("<goes>
+    through a symbolic link to ..."), or anything but a regular file."""
     real = pathlib.Path(os.path.realpath(path))
     if not real.is_relative_to(ROOT):
-        raise PluginError(f"{name} goes through a symbolic link to {real}, outside the "
+        raise PluginError(f"{goes} through a symbolic link to {real}, outside the "
                           f"repository {ROOT}: the site takes only the repository's files")
     try:
         info = os.stat(real)
     except OSError:
         info = None
     if info is None or not stat.S_ISREG(info.st_mode):
-        raise PluginError(f"{name} is not a regular file")
+        raise PluginError(not_a_file)
+    return real, info
+
+
+def _check_docs_file(path: pathlib.Path) -> None:
+    """Refuses a file of docs/ that is a symbolic link to a file outside the
+    repository, is not a regular file or is over MAX_DOCS_FILE_BYTES."""
+    name = os.path.relpath(path, ROOT)
+    _, info = _regular_file_inside(path, f"{name} goes", f"{name} is not a regular file")
     if info.st_size > MAX_DOCS_FILE_BYTES:
         raise PluginError(f"{name} is too large: over {MAX_DOCS_FILE_BYTES} bytes "
                           "(MAX_DOCS_FILE_BYTES, for a file of docs/)")
@@ -105,16 +113,8 @@ def _repository_file(page: str, path: str, image: bool) -> bytes:
                           "the repository's files")
     if "" in parts or "." in parts or "\0" in path:
         raise PluginError(f"{link}: not a plain path (an empty or '.' part, a NUL)")
-    real = pathlib.Path(os.path.realpath(ROOT / path))
-    if not real.is_relative_to(ROOT):
-        raise PluginError(f"{link}, which goes through a symbolic link to {real}, outside the "
-                          f"repository {ROOT}: the site takes only the repository's files")
-    try:
-        info = os.stat(real)
-    except OSError:
-        info = None
-    if info is None or not stat.S_ISREG(info.st_mode):
-        raise PluginError(f"{link}, which is not a file")
+    real, info = _regular_file_inside(ROOT / path, f"{link}, which goes",
+                                      f"{link}, which is not a file")
     limit, name = ((MAX_IMAGE_BYTES, "MAX_IMAGE_BYTES, for an image") if image else
                    (MAX_SOURCE_PAGE_BYTES, "MAX_SOURCE_PAGE_BYTES, for a file shown as a page"))
     if info.st_size > limit:
