@@ -126,7 +126,9 @@ def table_rows(path: pathlib.Path) -> list:
 
 
 def value(match: re.Match) -> str:
-    parts = [p.strip() for p in match.group("spec").split("|")]
+    # Inside a Markdown table a marker separates its fields with "\|", as a
+    # bare "|" would split the table's cell.
+    parts = [p.strip() for p in re.split(r"\\?\|", match.group("spec"))]
     options = {}
     while parts and parts[-1].split("=", 1)[0] in ("fmt", "x"):
         key, text = parts.pop().split("=", 1)
