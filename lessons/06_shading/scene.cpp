@@ -57,8 +57,17 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
     }
     const std::optional<rl::mat3> normals = normal_matrix(m.transform);
     if (!normals) return std::nullopt;  // a flattened model (a zero scale) has no surface to light
-    return Placed{{m.transform, *normals, mvp, camera.eye, lighting, &m.texture, sampler, {}},
-                  Surface(m.mesh, lit.normals, m.transform)};
+    // Member by member: a trailing {} by position would zero `colour` (0.8
+    // by default, the albedo without a texture).
+    Uniforms u;
+    u.model_matrix = m.transform;
+    u.normal_matrix = *normals;
+    u.model_view_projection = mvp;
+    u.eye = camera.eye;
+    u.lighting = lighting;
+    u.texture = &m.texture;
+    u.sampler = sampler;
+    return Placed{u, Surface(m.mesh, lit.normals, m.transform)};
 }
 
 // [doc:render-lit]

@@ -127,17 +127,16 @@ struct Renderer::Impl {
             }
             placed.push_back(std::nullopt);
             if (const std::optional<rl::mat3> normals =
-                    shading::normal_matrix(m.lit.model.transform))
+                    shading::normal_matrix(m.lit.model.transform)) {
+                // Member by member: a trailing {} by position zeroed `colour`.
+                shading::Uniforms u;
+                u.model_matrix = m.lit.model.transform;
+                u.normal_matrix = *normals;
+                u.lighting = r.lighting;
+                u.texture = &m.lit.model.texture;
                 placed.back() = shading::Placed{
-                    {m.lit.model.transform,
-                     *normals,
-                     rl::mat4::identity(),
-                     {},
-                     r.lighting,
-                     &m.lit.model.texture,
-                     {},
-                     {}},
-                    shading::Surface(m.lit.model.mesh, m.lit.normals, m.lit.model.transform)};
+                    u, shading::Surface(m.lit.model.mesh, m.lit.normals, m.lit.model.transform)};
+            }
             clip.emplace_back(o.vertex_cache ? models.back().representative.size()
                                              : models.back().indices.size());
             materials.push_back(material_for(models.back(), placed.back()));
