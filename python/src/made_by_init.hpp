@@ -38,12 +38,12 @@ struct CheckedCaster : pybind11::detail::type_caster_base<T> {
 
 }  // namespace py_rl
 
-#define RASTERLAB_REFUSE_USE_BEFORE_INIT(T, NAME)                                     \
-    namespace py_rl::made_by_init_names {                                             \
-    inline constexpr char T##_name[] = NAME;                                          \
-    }                                                                                 \
-    namespace pybind11::detail {                                                      \
-    template <>                                                                       \
-    struct type_caster<py_rl::T> : py_rl::CheckedCaster<py_rl::T,                     \
-                                                        py_rl::made_by_init_names::T##_name> {}; \
+#define RASTERLAB_REFUSE_USE_BEFORE_INIT(T, NAME)                                 \
+    namespace py_rl::made_by_init_names {                                         \
+    inline constexpr char T##_name[] = NAME;                                      \
+    }                                                                             \
+    namespace pybind11::detail {                                                  \
+    template <>                                                                   \
+    struct type_caster<py_rl::T>                                                  \
+        : py_rl::CheckedCaster<py_rl::T, py_rl::made_by_init_names::T##_name> {}; \
     }
