@@ -425,14 +425,17 @@ TEST(PerspectiveTest, ModelFarFromTheOriginLooksTheSameUpToTenThousand) {
     EXPECT_GT(share_differing_from_origin(1e6f), 0.05);  // the failure, measured and shown
 }
 
+// The crate, scaled.
+std::vector<TexturedModel> crate_at_scale(float scale) {
+    std::vector<std::string> warnings;
+    std::vector<TexturedModel> models;
+    models.push_back(load_model(rl::project_model("crate"),
+                                rl::compose({.scale = {scale, scale, scale}}), warnings));
+    return models;
+}
+
 TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
-    const auto scene_at_scale = [](float scale) {
-        std::vector<std::string> warnings;
-        std::vector<TexturedModel> models;
-        models.push_back(load_model(rl::project_model("crate"),
-                                    rl::compose({.scale = {scale, scale, scale}}), warnings));
-        return models;
-    };
+    const auto scene_at_scale = crate_at_scale;
     const std::vector<TexturedModel> big = scene_at_scale(1e15f);
     const Camera camera = frame_box(scene_bounds(big), 50, 1);
     ASSERT_NO_THROW(check(camera));
@@ -454,10 +457,7 @@ TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
 // floors (far at least 1e-3) a model 1e-9 across drew nothing, with exit 0.
 TEST(PerspectiveTest, TinyModelIsFramedAndDrawnLikeAUnitOne) {
     const auto draw = [](float scale) {
-        std::vector<std::string> warnings;
-        std::vector<TexturedModel> models;
-        models.push_back(load_model(rl::project_model("crate"),
-                                    rl::compose({.scale = {scale, scale, scale}}), warnings));
+        const std::vector<TexturedModel> models = crate_at_scale(scale);
         const Camera camera = frame_box(scene_bounds(models), 50, 1);
         check(camera);
         perspective::ColourTarget frame = perspective::colour_target(64, 64);
