@@ -14,6 +14,7 @@
 //       });
 #pragma once
 
+#include "bands.hpp"
 #include "raster.hpp"
 #include "rasterlab/mesh.hpp"
 
@@ -53,8 +54,11 @@ DrawCounts draw_faces(const rl::Mesh& mesh, int width, int height, const DrawOpt
             ++counts.culled;
             continue;
         }
-        const bool ok = rasterize(options.method, t.screen(), width, height,
-                                  [&](int x, int y, rl::vec3 b) { fragment_stage(t, x, y, b); });
+        // In bands of rows, so that a host (the Python module) can stop here.
+        const bool ok = for_each_band(t.screen(), {0, 0, width, height}, 0, [&](PixelRect band) {
+            return rasterize(options.method, t.screen(), band,
+                             [&](int x, int y, rl::vec3 b) { fragment_stage(t, x, y, b); });
+        });
         ++(ok ? counts.drawn : counts.refused);
     }
     return counts;

@@ -42,6 +42,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "02_triangles/bands.hpp"
 #include "02_triangles/raster.hpp"
 #include "03_zbuffer/depth_test.hpp"
 #include "camera.hpp"
@@ -392,17 +393,15 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
 }
 // [/doc:rasterize-triangle]
 
-// [doc:draw]
-// Every face of the geometry through every stage, into the target.
-template <class Geometry, class P, class... Pixels>
-PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pixels...>& target,
-                    const PipelineOptions& options = {}) {
+// [doc:assemble]
+// Stages 1-4 for every face of the geometry, for a target of width x height
+// pixels: each triangle that comes out, set up for the rasterizer, goes to
+// emit(t). Counts the faces, and those culled, clipped and wholly outside.
+template <class Geometry, class P, class Emit>
+void assemble(const Geometry& geometry, const P& program, int width, int height,
+              const PipelineOptions& options, PipelineCounts& counts, Emit&& emit) {
     using V = typename P::Varyings;
-    const ClipPlanes planes = clip_planes(options.clip, target.width(), target.height());
-    const double most_visited = options.max_overdraw > 0 ? options.max_overdraw * target.width() *
-                                                               target.height() * target.samples()
-                                                         : HUGE_VAL;
-    PipelineCounts counts;
+    const ClipPlanes planes = clip_planes(options.clip, width, height);
     for (int face = 0; face < geometry.face_count(); ++face) {
         ++counts.faces;
         // 1. The vertex stage: each corner to clip space, with its varyings.
@@ -420,20 +419,60 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
         }
         // 3. Clipping: the face becomes a convex polygon, drawn as a fan.
         const ClipPolygon<V> polygon = clip_face(v, planes, counts);
-        for (int i = 1; i + 1 < polygon.size; ++i) {
+        for (int i = 1; i + 1 < polygon.size; ++i)
             // 4. Divide and viewport; the flat values come from the first vertex.
-            const TriangleSetup<V, FlatOf<P>> t =
-                set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
-                       polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
-                       options.interpolation, target.width(), target.height());
-            // 5.-8. Rasterize, depth test, fragment stage, store.
-            const bool ok = rasterize_triangle(t, program, target, options, counts);
-            ++(ok ? counts.drawn : counts.refused);
-            if (static_cast<double>(counts.visited) > most_visited) throw_overdraw(most_visited);
-        }
+            emit(set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
+                        polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
+                        options.interpolation, width, height));
     }
+}
+// [/doc:assemble]
+
+// [doc:draw]
+// Every face of the geometry through every stage, into the target.
+template <class Geometry, class P, class... Pixels>
+PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pixels...>& target,
+                    const PipelineOptions& options = {}) {
+    const triangles::PixelRect whole =
+        options.tile.value_or(triangles::PixelRect{0, 0, target.width(), target.height()});
+    const double most_visited = options.max_overdraw > 0 ? options.max_overdraw * target.width() *
+                                                               target.height() * target.samples()
+                                                         : HUGE_VAL;
+    PipelineCounts counts;
+    // 1.-4. Vertex stage, culling, clipping, divide and viewport.
+    assemble(geometry, program, target.width(), target.height(), options, counts,
+             [&](const auto& t) {
+                 // 5.-8. Rasterize, depth test, fragment stage, store; in bands
+                 // of rows, one row of margin for the samples' offsets, so
+                 // that a host (the Python module) can stop here.
+                 const bool ok = triangles::for_each_band(
+                     t.screen(), whole, 1, [&](const triangles::PixelRect& band) {
+                         PipelineOptions in_band = options;
+                         in_band.tile = band;
+                         return rasterize_triangle(t, program, target, in_band, counts);
+                     });
+                 ++(ok ? counts.drawn : counts.refused);
+                 if (static_cast<double>(counts.visited) > most_visited)
+                     throw_overdraw(most_visited);
+             });
     return counts;
 }
 // [/doc:draw]
+
+// The samples draw() would visit (its triangles' bounding boxes within the
+// target, times the samples per pixel), found by stages 1-4 alone: a caller
+// can refuse a pass before drawing any of it, as lesson 08 does.
+template <class Geometry, class P>
+double samples_to_visit(const Geometry& geometry, const P& program, int width, int height,
+                        int samples, const PipelineOptions& options = {}) {
+    const triangles::PixelRect whole =
+        options.tile.value_or(triangles::PixelRect{0, 0, width, height});
+    double visits = 0;
+    PipelineCounts counts;
+    assemble(geometry, program, width, height, options, counts, [&](const auto& t) {
+        visits += static_cast<double>(box_samples(t.screen(), whole)) * samples;
+    });
+    return visits;
+}
 
 }  // namespace perspective

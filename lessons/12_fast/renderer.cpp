@@ -1,6 +1,7 @@
 #include "renderer.hpp"
 
 #include "orbit.hpp"
+#include "rasterlab/checkpoint.hpp"
 #include "workers.hpp"
 
 #include <algorithm>
@@ -368,6 +369,7 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                             s.materials.data(),
                             s.options.techniques};
         s.tile_counts[i] = {};
+        rl::checkpoint();  // a host's Ctrl-C, between tiles
         render_tile(work, buffers, frame_, s.tile_counts[i]);
     };
     if (s.options.parallel)

@@ -5,6 +5,7 @@
 
 #include "keywords.hpp"
 #include "lessons.hpp"
+#include "rasterlab/checkpoint.hpp"
 #include "rasterlab/file_io.hpp"
 #include "rasterlab/image_io.hpp"
 #include "result.hpp"
@@ -29,6 +30,10 @@ PYBIND11_MODULE(_core, m) {
         }
     });
     py_rl::note_main_thread();
+    // Inside a frame too: the pipeline calls this between bands of a
+    // triangle's rows and lesson 12 between tiles, so Ctrl-C stops a render
+    // within about 50 ms plus one band's or tile's time.
+    rl::set_checkpoint_hook([] { py_rl::check_signals(50); });
     py_rl::bind_result(m);
     py_rl::bind_scene_args(m);
     m.def(

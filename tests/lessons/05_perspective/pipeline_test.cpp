@@ -9,6 +9,7 @@
 #include "05_perspective/lab/tile_check.hpp"
 #include "05_perspective/scene.hpp"
 #include "05_perspective/view_options.hpp"
+#include "rasterlab/checkpoint.hpp"
 #include "rasterlab/image_metrics.hpp"
 
 namespace {
@@ -87,6 +88,41 @@ TEST(Pipeline, DepthOnlyPassWritesDepthAndShadesNothing) {
     EXPECT_EQ(calls, 0);  // no colour to write: the fragment stage never runs
     EXPECT_EQ(counts.fragments, 32u * 32u);
     EXPECT_FLOAT_EQ(target.depth()->at(10, 20), 0.75f);  // window depth (0.5 + 1) / 2
+}
+
+// A hook that counts the checkpoints it is called at, and throws at the
+// `stop_at`-th: what the Python module's Ctrl-C does.
+struct Stopped {};
+int g_checkpoints = 0, g_stop_at = 0;
+void count_and_maybe_stop() {
+    if (++g_checkpoints == g_stop_at) throw Stopped{};
+}
+struct CheckpointHook {
+    explicit CheckpointHook(int stop_at) {
+        g_checkpoints = 0;
+        g_stop_at = stop_at;
+        rl::set_checkpoint_hook(count_and_maybe_stop);
+    }
+    ~CheckpointHook() { rl::set_checkpoint_hook(nullptr); }
+};
+
+TEST(Pipeline, AHostCanStopAScreenFillingTriangleBetweenBandsOfRows) {
+    const int size = 4 * triangles::kCheckpointRows;
+    RenderTarget<rl::Rgba> target(size, size, {}, rl::Rgba{});
+    {
+        const CheckpointHook hook(0);  // counts only
+        draw(covering_triangle(), Constant{{1, 2, 3, 255}}, target);
+        EXPECT_EQ(g_checkpoints, 4);  // one triangle, four bands
+    }
+    RenderTarget<rl::Rgba> stopped(size, size, {}, rl::Rgba{});
+    const CheckpointHook hook(3);  // stops before the third band
+    EXPECT_THROW(draw(covering_triangle(), Constant{{1, 2, 3, 255}}, stopped), Stopped);
+    // Two bands drawn, as the whole draw drew them; nothing below.
+    for (int y = 0; y < size; y += 7) {
+        const bool drawn = y < 2 * triangles::kCheckpointRows;
+        EXPECT_EQ(stopped.colour<0>().at(5, y) == target.colour<0>().at(5, y), drawn) << y;
+        EXPECT_EQ(stopped.colour<0>().at(5, y) == rl::Rgba{}, !drawn) << y;
+    }
 }
 
 struct Two {

@@ -23,6 +23,7 @@
 #include "12_fast/orbit.hpp"
 #include "12_fast/renderer.hpp"
 #include "hwy/targets.h"
+#include "rasterlab/checkpoint.hpp"
 #include "rasterlab/image_metrics.hpp"
 #include "rasterlab/transform.hpp"
 
@@ -333,6 +334,34 @@ TEST(Image, SameBytesWhateverTheThreadCount) {
         options.threads = threads;
         EXPECT_EQ(fast_image(s, options, 301, 203), one) << threads << " threads";
     }
+}
+
+// A hook that counts the checkpoints it is called at (from any thread), and
+// throws at the `stop_at`-th: what the Python module's Ctrl-C does.
+struct Stopped {};
+std::atomic<int> g_checkpoints{0};
+int g_stop_at = 0;
+void count_and_maybe_stop() {
+    if (++g_checkpoints == g_stop_at) throw Stopped{};
+}
+
+TEST(Renderer, AHostCanStopAFrameBetweenTiles) {
+    fast::FastOptions options;
+    const Scene s = default_scene(options.render);
+    options.threads = 2;
+    fast::Renderer renderer(s.models, 256, 192, options);  // 4 x 3 tiles of 64
+    g_checkpoints = 0;
+    g_stop_at = 0;  // counts only
+    rl::set_checkpoint_hook(count_and_maybe_stop);
+    renderer.render(s.camera);
+    EXPECT_EQ(g_checkpoints.load(), 12);
+    g_checkpoints = 0;
+    g_stop_at = 5;
+    EXPECT_THROW(renderer.render(s.camera), Stopped);  // from whichever thread met it
+    rl::set_checkpoint_hook(nullptr);
+    // The renderer is still whole: the next frame is the frame.
+    renderer.render(s.camera);
+    EXPECT_EQ(renderer.frame(), fast_image(s, options, 256, 192));
 }
 
 TEST(Image, EachTechniqueOffLeavesTheImageAlone) {
