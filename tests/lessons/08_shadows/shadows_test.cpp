@@ -4,6 +4,8 @@
 // than a texel, a caster touching its receiver).
 #include <gtest/gtest.h>
 
+#include "rasterlab/checkpoint.hpp"
+
 #include <cmath>
 
 #include "08_shadows/scene.hpp"
@@ -381,6 +383,27 @@ TEST(ShadowsTest, TheShadowPassRefusesMoreWorkThanItsCap) {
             std::string::npos)
             << e.what();
     }
+}
+
+// Counts the checkpoints the drawing passes (one or more per triangle drawn).
+int g_checkpoints = 0;
+void count_checkpoint() {
+    ++g_checkpoints;
+}
+
+TEST(ShadowsTest, APassOverItsCapIsRefusedBeforeAnyOfItIsDrawn) {
+    const std::vector<MappedModel> floor = floor_scene(false);
+    ShadowMapOptions options{.size = 256};
+    options.max_samples = 0.5 * 256 * 256;
+    g_checkpoints = 0;
+    rl::set_checkpoint_hook(count_checkpoint);
+    EXPECT_THROW(map_of(floor, {0, 1, 0}, options), perspective::OverdrawError);
+    const int drawing_refused = g_checkpoints;
+    options.max_samples = kMaxShadowPassSamples;
+    map_of(floor, {0, 1, 0}, options);
+    rl::set_checkpoint_hook(nullptr);
+    EXPECT_EQ(drawing_refused, 0);  // refused by its set-up's count, nothing drawn
+    EXPECT_GT(g_checkpoints, 0);    // (the hook does see a drawing)
 }
 
 }  // namespace
