@@ -172,40 +172,91 @@ def scale_axes(axes, options, rows):
     axes.grid(True, which="both", alpha=0.3)
 
 
+def panel_grid(plt, count, width, height):
+    """`count` small charts, two to a row, on shared scales: the figure and
+    the axes in use (the spare one of an odd count hidden)."""
+    columns_n = min(2, count)
+    rows_n = math.ceil(count / columns_n)
+    figure, grid = plt.subplots(rows_n, columns_n, figsize=(width * columns_n, height * rows_n + 0.6),
+                                sharex=True, sharey=True, squeeze=False)
+    all_axes = [a for line in grid for a in line]
+    for spare in all_axes[count:]:
+        spare.axis("off")  # room for a legend
+    for axes in all_axes[:count]:
+        axes.xaxis.set_tick_params(labelbottom=True)  # also over an empty slot
+    return figure, all_axes[:count], all_axes[count:]
+
+
 def draw_lines(plt, rows, options):
     """One line per series value (colour), and per style value or y column
-    (dash pattern): --y a,b draws each column as its own line."""
-    figure, axes = plt.subplots(figsize=(7.5, 5))
+    (dash pattern): --y a,b draws each column as its own line. With --panel,
+    a small chart per value of that column, the same colours in each. A line
+    that would pass twice through one x (rows of different scenes, say, in one
+    series) is refused: its zig-zag would join points that do not belong
+    together."""
     series = list(dict.fromkeys(r[options.series] for r in rows)) if options.series else [None]
     y_columns = options.y.split(",")
     if options.style and len(y_columns) > 1:
         sys.exit("--style and several --y columns both set the dash pattern: choose one")
     styles = list(dict.fromkeys(r[options.style] for r in rows)) if options.style else [None]
+    panels = {}
+    for row in rows:
+        panels.setdefault(row[options.panel] if options.panel else "", []).append(row)
+    if options.panel:
+        figure, all_axes, spares = panel_grid(plt, len(panels), 5.2, 3.8)
+    else:
+        figure, single = plt.subplots(figsize=(7.5, 5))
+        all_axes, spares = [single], []
     dashes = ["-", (0, (6, 3)), ":", "-."]
-    flat = []  # lines that are zero everywhere: named in a note, not drawn on top of each other
-    for i, name in enumerate(series):
-        for j, (style, y) in enumerate((s, y) for s in styles for y in y_columns):
-            members = [r for r in rows if (name is None or r[options.series] == name)
-                       and (style is None or r[options.style] == style)]
-            points = sorted((number(r[options.x]), number(r[y])) for r in members)
-            parts = [p for p in (name, style, y if len(y_columns) > 1 else None) if p is not None]
-            label = ", ".join(parts) or y
-            if points and all(p[1] == 0 for p in points):
-                flat.append(label)
-                continue
-            axes.plot([p[0] for p in points], [p[1] for p in points], linestyle=dashes[j % len(dashes)],
-                      color=f"C{i}" if len(series) > 1 or len(y_columns) == 1 else f"C{j}",
-                      marker="o", markersize=3, label=label)
-            if options.point_labels:  # each point named by its value of that column (e.g. segments)
-                for r in members:
-                    axes.annotate(r[options.point_labels], (number(r[options.x]), number(r[y])),
-                                  textcoords="offset points", xytext=(3, 3), fontsize=6, color=f"C{i}")
-    axes.set_title(options.title, fontsize=10)
-    axes.legend(fontsize=7, ncol=2, handlelength=4)  # long enough handles to show the dashes
-    if flat:
-        axes.text(0.01, 0.99, "zero everywhere (not drawn):\n" + "\n".join(flat), transform=axes.transAxes,
-                  fontsize=6.5, va="top", ha="left", color="0.3")
-    finish(figure, axes, options, rows)
+    for axes, (panel, panel_rows) in zip(all_axes, panels.items()):
+        flat = []  # lines that are zero everywhere: named in a note, not drawn on top of each other
+        for i, name in enumerate(series):
+            for j, (style, y) in enumerate((s, y) for s in styles for y in y_columns):
+                members = [r for r in panel_rows if (name is None or r[options.series] == name)
+                           and (style is None or r[options.style] == style)]
+                points = sorted((number(r[options.x]), number(r[y])) for r in members)
+                parts = [p for p in (name, style, y if len(y_columns) > 1 else None) if p is not None]
+                label = ", ".join(parts) or y
+                xs = [p[0] for p in points]
+                if len(set(xs)) != len(xs):
+                    where = f" in {options.panel} {panel}" if options.panel else ""
+                    sys.exit(f"{options.csv}: the line '{label}'{where} has several points at one "
+                             f"{options.x}: its rows differ in a column the chart does not split "
+                             "by (give it --panel, --style or --where)")
+                if points and all(p[1] == 0 for p in points):
+                    flat.append(label)
+                    continue
+                axes.plot(xs, [p[1] for p in points], linestyle=dashes[j % len(dashes)],
+                          color=f"C{i}" if len(series) > 1 or len(y_columns) == 1 else f"C{j}",
+                          marker="o", markersize=3, label=label)
+                if options.point_labels:  # each point named by its value of that column (e.g. segments)
+                    for r in members:
+                        axes.annotate(r[options.point_labels], (number(r[options.x]), number(r[y])),
+                                      textcoords="offset points", xytext=(3, 3), fontsize=6,
+                                      color=f"C{i}")
+        if flat:
+            axes.text(0.01, 0.99, "zero everywhere (not drawn):\n" + "\n".join(flat),
+                      transform=axes.transAxes, fontsize=6.5, va="top", ha="left", color="0.3")
+        if options.panel:
+            axes.set_title(f"{options.panel} {panel}", fontsize=9)
+    if options.panel:
+        figure.suptitle(options.title, fontsize=10)
+        # One legend for every panel, in the empty slot if there is one, else
+        # below them: where it covers no line.
+        named = {}
+        for axes in all_axes:
+            for handle, label in zip(*axes.get_legend_handles_labels()):
+                named.setdefault(label, handle)
+        if spares:
+            spares[0].legend(named.values(), named.keys(), fontsize=8, handlelength=4, loc="center")
+        else:
+            figure.legend(named.values(), named.keys(), fontsize=7, ncol=3, handlelength=4,
+                          loc="lower center")
+    else:
+        all_axes[0].set_title(options.title, fontsize=10)
+        all_axes[0].legend(fontsize=7, ncol=2, handlelength=4)  # long enough handles to show the dashes
+    finish(figure, all_axes if options.panel else all_axes[0], options, rows,
+           (lambda: figure.subplots_adjust(bottom=0.2)) if options.panel and not spares else None)
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())
         lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
@@ -318,14 +369,7 @@ def main():
         panels.setdefault(row[options.panel] if options.panel else "", []).append(row)
 
     if options.panel:  # one small chart per value, side by side, two to a row, on shared scales
-        columns_n = min(2, len(panels))
-        rows_n = math.ceil(len(panels) / columns_n)
-        figure, grid = plt.subplots(rows_n, columns_n, figsize=(5.2 * columns_n, 3.6 * rows_n + 0.6),
-                                    sharex=True, sharey=True, squeeze=False)
-        all_axes = [a for line in grid for a in line]
-        for spare in all_axes[len(panels):]:
-            spare.set_visible(False)
-        all_axes = all_axes[:len(panels)]
+        figure, all_axes, _ = panel_grid(plt, len(panels), 5.2, 3.6)
     else:
         figure, single = plt.subplots(figsize=(8.5, 5))
         all_axes = [single]

@@ -2,7 +2,10 @@
 """plot_lab.py marks the best trade-offs within each --group: a method that
 is the best trade-off in one group is not marked in another where a faster,
 more accurate point beats it (issue 18: the marks were keyed on the label
-alone, and "affine, 8x8 cells" was marked best at every tilt)."""
+alone, and "affine, 8x8 cells" was marked best at every tilt). And a line
+chart refuses a line that passes twice through one x (issue 34: lesson 12's
+sizes joined three scenes into one zig-zag line when --panel was ignored),
+and draws one per panel when --panel splits them."""
 import pathlib
 import subprocess
 import sys
@@ -44,4 +47,19 @@ with tempfile.TemporaryDirectory() as folder:
              for line in table.read_text().splitlines()[2:]}
     if marks != {"exact": "yes", "rough": ""}:
         sys.exit(f"--x-spread: best trade-offs {marks}, expected only exact")
-print("best trade-offs marked within each group and each panel, overlapping runs tied")
+    # Lines: two scenes in one series without --panel is a zig-zag, refused,
+    # naming the line; with --panel each scene gets its own line.
+    csv.write_text("scene,size,renderer,ms\n"
+                   "a,512,ours,1\n" "a,1024,ours,4\n"
+                   "b,512,ours,9\n" "b,1024,ours,30\n")
+    lines = [sys.executable, str(plot), str(csv), "--x", "size", "--y", "ms", "--series", "renderer",
+             "--svg", str(folder / "lines.svg")]
+    mixed = subprocess.run(lines, capture_output=True, text=True)
+    if mixed.returncode == 0 or "the line 'ours' has several points at one size" not in mixed.stderr:
+        sys.exit(f"a line through two scenes was drawn: {mixed.returncode} {mixed.stderr}")
+    subprocess.run(lines + ["--panel", "scene"], check=True)
+    svg = (folder / "lines.svg").read_text()
+    if svg.count("scene a") != 1 or svg.count("scene b") != 1:
+        sys.exit("--panel with --series: expected one small chart per scene")
+print("best trade-offs marked within each group and each panel, overlapping runs tied; "
+      "a line never joins two panels' rows")

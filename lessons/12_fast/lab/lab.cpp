@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <memory>
 #include <optional>
 #include <string>
@@ -396,7 +397,7 @@ int main(int argc, char** argv) {
         // so it is shown per thread).
         rl::ResultsTable stages_table({"scene", "size", "stage", "ms_per_frame"});
         for (const Scene& s : scenes)
-            for (int size : {step_size, sizes.back()}) {
+            for (int size : std::set<int>{step_size, sizes.back()}) {  // one size if quick
                 fast::Renderer renderer(s.models, size, size, {});
                 renderer.render(s.camera);
                 fast::StageTimes sum;
