@@ -177,7 +177,7 @@ def console_errors(events: list) -> list:
 PAGE_FACTS = r"""
 (() => {
   const skipped = "code, pre, script, style, .katex, .md-search, .md-nav";
-  const raw = [], tables = [];
+  const raw = [], tables = [], leftovers = [];
   const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
   for (let node = walker.nextNode(); node; node = walker.nextNode()) {
     if (node.parentElement.closest(skipped)) continue;
@@ -185,7 +185,32 @@ PAGE_FACTS = r"""
     if (text.includes("$") || text.includes("\\(") || text.includes("\\["))
       raw.push(text.trim().slice(0, 80));
     if (/\|\s*-{3}/.test(text)) tables.push(text.trim().slice(0, 80));
+    // An HTML comment or a value marker shown as text (a "|" inside one split
+    // a table's cell, and the rest of the marker became the cell's text).
+    if (/<!--|-->|\bvalue: \S+\.md\b/.test(text)) leftovers.push(text.trim().slice(0, 80));
   }
+  const visible = e => e.closest(skipped) === null;
+  // A list that ran into the paragraph above it (a line directly under a
+  // caption): its items are lines of the paragraph's text starting "- ".
+  const runOn = [...document.querySelectorAll("article p")].filter(visible)
+      .map(p => p.textContent).filter(t => /\n\s*[-*+] \S/.test(t))
+      .map(t => t.trim().slice(0, 80));
+  // Table rows cut off from their table by a blank line: a paragraph of "| a | b |" lines.
+  const rowsAsText = [...document.querySelectorAll("article p")].filter(visible)
+      .map(p => p.textContent).filter(t => /^\s*\|.*\|\s*$/m.test(t))
+      .map(t => t.trim().slice(0, 80));
+  // Markdown syntax left in a table cell as text: the cell was not parsed.
+  const cells = [...document.querySelectorAll("article td, article th")].filter(visible)
+      .filter(c => [...c.childNodes].some(n => n.nodeType === Node.TEXT_NODE &&
+                                                /\*\*|`|\]\(|<!--|-->/.test(n.textContent)))
+      .map(c => c.textContent.trim().slice(0, 80));
+  // A figure shown at less than half its own width (three or four to a row
+  // in the column: a 2x crop shown at 0.4x). The models' textures (obj/) are
+  // thumbnails of whole maps, not figures.
+  const narrow = [...document.querySelectorAll("article img")].filter(
+      i => i.naturalWidth > 0 && !/\/obj\//.test(i.currentSrc || i.src) &&
+           i.getBoundingClientRect().width < i.naturalWidth / 2).map(
+      i => `${(i.currentSrc || i.src).split("/").pop()} at ${Math.round(i.getBoundingClientRect().width)} px of ${i.naturalWidth}`);
   return {
     images: [...document.images].map(i => ({src: i.currentSrc || i.src, width: i.naturalWidth})),
     links: [...document.querySelectorAll("a[href]")].map(a => a.href),
@@ -197,6 +222,11 @@ PAGE_FACTS = r"""
     marked: document.querySelectorAll(".arithmatex").length,
     raw: raw,
     tables: tables,
+    leftovers: leftovers,
+    run_on: runOn,
+    rows_as_text: rowsAsText,
+    cells: cells,
+    narrow: narrow,
     // A display formula grows to its width; the block around it scrolls.
     wide: [...document.querySelectorAll("div.arithmatex")].filter(
         e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent.slice(0, 60)),
@@ -365,6 +395,11 @@ def check_pages(options, pages: list, chromium: str, base: str) -> int:
             problems += check_links(facts["links"], base, cache)
             problems += [f"formula not typeset: ...{text}..." for text in facts["raw"]]
             problems += [f"a Markdown table left as text: {text}..." for text in facts["tables"]]
+            problems += [f"markup left in the text: {text}..." for text in facts["leftovers"]]
+            problems += [f"a list run into a paragraph: {text}..." for text in facts["run_on"]]
+            problems += [f"table rows shown as a paragraph: {text}..." for text in facts["rows_as_text"]]
+            problems += [f"a table cell holding markup: {text}..." for text in facts["cells"]]
+            problems += [f"an image shown narrower than half its width: {text}" for text in facts["narrow"]]
             problems += [f"a display formula wider than the page's column ({WIDTH} px "
                          f"window): {text}..." for text in facts["wide"]]
             if re.match(r"\d\d_", page) and not (facts["previous"] and facts["next"]):

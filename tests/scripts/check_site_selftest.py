@@ -2,8 +2,11 @@
 """The site's browser check itself (site/check_site.py) must fail on each
 breakage it claims to catch. It is run on a copy of the built site with one
 breakage per page: a missing image, a link to an anchor that is not there, a
-formula KaTeX cannot read, a formula left untypeset, and a search index that
-has lost a word. Each must be named in the check's report, and the check must exit 1.
+formula KaTeX cannot read, a formula left untypeset, a search index that
+has lost a word, and what issue 34 found on the pages: a value marker shown as
+text, a list run into the paragraph above it, table rows cut off from their
+table, Markdown left in a table cell, and a figure shown at under half its
+width. Each must be named in the check's report, and the check must exit 1.
 
     tests/scripts/check_site_selftest.py SITE_DIR
 """
@@ -53,6 +56,24 @@ def break_site(site: pathlib.Path) -> list:
     page.write_text(text[:match.start()] + "<span>" + match.group(1) + "</span>"
                     + text[match.end():])
     expected += ["04_textures.html: formula not typeset", "where 04_textures.md holds"]
+    # What a page's Markdown can turn into when it goes wrong (issue 34).
+    page = site / "02_triangles.html"
+    page.write_text(page.read_text().replace("</article>", (
+        # a "|" inside a value marker split its table cell
+        "<table><tr><td>&lt;!-- value: docs/charts/12_sizes.md</td><td>**42**</td></tr></table>"
+        # a list line directly under a caption line
+        "<p>Where it breaks:\n- near the eye\n- far away</p>"
+        # table rows after a blank line
+        "<p>| 64 | 3.1 |\n| 128 | 6.0 |</p>"
+        # a 2x crop squeezed into a quarter of the column
+        '<img src="images/02_overdraw_edge.png" style="width: 20px">'
+        "</article>"), 1))
+    expected += ["02_triangles.html: markup left in the text: <!-- value: docs/charts/12_sizes.md",
+                 "02_triangles.html: a table cell holding markup: **42**",
+                 "02_triangles.html: a list run into a paragraph: Where it breaks:",
+                 "02_triangles.html: table rows shown as a paragraph: | 64 | 3.1 |",
+                 "02_triangles.html: an image shown narrower than half its width: "
+                 "02_overdraw_edge.png at 20 px"]
     # A search index that has lost a word finds nothing for it.
     index = site / "search" / "search_index.json"
     entries = json.loads(index.read_text())
