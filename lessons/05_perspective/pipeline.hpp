@@ -20,8 +20,8 @@
 //           return {perspective::clip_position(mvp, c.position()), c.uv()};
 //       }
 //       rl::Rgba fragment(const perspective::Fragment<rl::vec2>& f) const {
-//           return textures::to_rgba(textures::sample(texture, f.varyings, {f.d_dx(), f.d_dy()},
-//           {}));
+//           const rl::vec4 texel = textures::sample(texture, f.varyings, {f.d_dx(), f.d_dy()}, {});
+//           return textures::to_rgba(texel);
 //       }
 //   };
 //   perspective::ColourTarget frame = perspective::colour_target(800, 600);

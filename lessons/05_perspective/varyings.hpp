@@ -24,10 +24,8 @@ namespace perspective {
 // as if it were a float: keep flat data in a program's Flat type instead).
 template <class V>
 concept Interpolable = std::default_initializable<V> && std::is_trivially_copyable_v<V> &&
-                               sizeof(V) %
-                               sizeof(float) ==
-                           0 &&
-                       alignof(V) == alignof(float);
+                       (sizeof(V) % sizeof(float) == 0) &&
+                       (alignof(V) == alignof(float));
 
 template <Interpolable V>
 using Lanes = std::array<float, sizeof(V) / sizeof(float)>;

@@ -2,7 +2,8 @@
 // by the shading model of your choice in linear light (or naively, to see
 // the difference).
 //
-//   std::vector<shading::LitModel> models = shading::default_scene(Output::srgb, warnings);
+//   std::vector<shading::LitModel> models =
+//       shading::default_scene(Output::srgb, Weighting::angle, warnings);
 //   shading::render(models, camera, options, frame);
 #pragma once
 

@@ -5,7 +5,13 @@
 //   blinn-phong the same with Blinn's half-vector specular.
 // The albedo comes from the diffuse texture at each pixel in every model.
 //
-//   const shading::Uniforms u = shading::uniforms(model, view_projection, eye, lighting, &chain);
+//   shading::Uniforms u;  // member by member: see scene.cpp
+//   u.model_matrix = model;
+//   u.normal_matrix = *shading::normal_matrix(model);  // empty for a singular model
+//   u.model_view_projection = view_projection * model;
+//   u.eye = camera.eye;
+//   u.lighting = lighting;
+//   u.texture = &chain;
 //   shading::draw(surface, shading::PhongShader{u, shading::Specular::blinn_phong}, target, {});
 #pragma once
 
