@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
                          "12_fast: warning: --threads %d: this machine runs %d threads at once; "
                          "using %d\n",
                          options.threads, renderer.threads(), renderer.threads());
-        const auto [ms, counts] = fast::render_orbit(renderer, scene.camera, frames);
+        const auto [ms, stages, counts] = fast::render_orbit(renderer, scene.camera, frames);
         outputs.stage(output, renderer.frame());
         std::printf(
             "%d frames of %dx%d on %d threads (%s): median %.2f ms per frame (first excluded); "
@@ -84,11 +84,10 @@ int main(int argc, char** argv) {
             frames, width, height, renderer.threads(), fast::simd_target(), ms, counts.triangles,
             static_cast<double>(counts.triangles) / ms / 1e3,
             static_cast<double>(counts.tiles.shaded) / ms / 1e3, output.c_str());
-        const fast::StageTimes& t = renderer.times();
         std::printf(
-            "last frame: vertex %.2f ms, setup %.2f, binning %.2f, tiles %.2f; %.0f%% of the "
-            "shader's lanes used\n",
-            t.vertex, t.setup, t.binning, t.tiles,
+            "median per frame: vertex %.2f ms, setup %.2f, binning %.2f, tiles %.2f; %.0f%% of "
+            "the shader's lanes used in the last\n",
+            stages.vertex, stages.setup, stages.binning, stages.tiles,
             100.0 * static_cast<double>(counts.tiles.shaded) /
                 static_cast<double>(std::max<std::uint64_t>(counts.tiles.lanes, 1)));
         if (!peer) {

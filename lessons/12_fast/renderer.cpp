@@ -384,17 +384,23 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     return counts;
 }
 
-OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames) {
-    std::vector<double> times;
+OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames,
+                      const std::function<void()>& between_frames) {
+    std::vector<double> times, vertex, setup, binning, tiles;
     OrbitRun run;
     for (int i = 0; i < frames; ++i) {
         const auto start = std::chrono::steady_clock::now();
         run.counts = renderer.render(orbit(camera, i, frames));
-        times.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count());
+        times.push_back(milliseconds_since(start));
+        const StageTimes& t = renderer.times();
+        vertex.push_back(t.vertex), setup.push_back(t.setup), binning.push_back(t.binning);
+        tiles.push_back(t.tiles);
+        if (between_frames && i + 1 < frames) between_frames();
     }
     run.median_ms = median_after_first(std::move(times));
+    run.median_stages = {
+        median_after_first(std::move(vertex)), median_after_first(std::move(setup)),
+        median_after_first(std::move(binning)), median_after_first(std::move(tiles))};
     return run;
 }
 

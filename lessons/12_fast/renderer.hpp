@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -92,9 +93,13 @@ class Renderer {
 // (the first frame left out) and the last frame's counts. The last frame,
 // renderer.frame(), is the view of `camera` itself.
 struct OrbitRun {
-    double median_ms = 0;
-    FrameCounts counts;
+    double median_ms = 0;      // per frame, the first excluded (it warms the caches)
+    StageTimes median_stages;  // each stage's own median, the first frame excluded
+    FrameCounts counts;        // the last frame's
 };
-OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames);
+// `between_frames`, if given, runs after every frame but the last (the
+// Python module looks for Ctrl-C there).
+OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames,
+                      const std::function<void()>& between_frames = {});
 
 }  // namespace fast

@@ -3,9 +3,6 @@
 // is the program's and the lab's: it is not timed from Python.)
 #include <pybind11/stl.h>
 
-#include <chrono>
-#include <vector>
-
 #include "12_fast/orbit.hpp"
 #include "12_fast/renderer.hpp"
 #include "12_fast/tile_kernels.hpp"
@@ -15,27 +12,6 @@
 #include "pipeline_result.hpp"
 
 namespace py_rl {
-
-namespace {
-
-// fast::render_orbit() with a look for Ctrl-C between frames (every 50 ms at
-// most): the same frames, the same timers around each.
-fast::OrbitRun orbit_run(fast::Renderer& renderer, const perspective::Camera& camera, int frames) {
-    std::vector<double> times;
-    fast::OrbitRun run;
-    for (int i = 0; i < frames; ++i) {
-        const auto start = std::chrono::steady_clock::now();
-        run.counts = renderer.render(fast::orbit(camera, i, frames));
-        times.push_back(
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count());
-        if (i + 1 < frames) check_signals(50);
-    }
-    run.median_ms = fast::median_after_first(std::move(times));
-    return run;
-}
-
-}  // namespace
 
 void bind_lesson12(py::module_ m) {
     const normal_mapping::MappedView mapped;
@@ -64,7 +40,9 @@ void bind_lesson12(py::module_ m) {
             options.render = request.options;  // with the lighting and output load_scene set
             fast::Renderer renderer(scene.models, width, height, options);
             check_signals();
-            const fast::OrbitRun run = orbit_run(renderer, scene.camera, frames);
+            // Ctrl-C between frames (at most every 50 ms), and between tiles.
+            const fast::OrbitRun run =
+                fast::render_orbit(renderer, scene.camera, frames, [] { check_signals(50); });
             r.colour = renderer.frame();
             r.count("frames", frames);
             r.count("median_ms", run.median_ms);
@@ -72,7 +50,7 @@ void bind_lesson12(py::module_ m) {
             r.count("simd", std::string(fast::simd_target()));
             r.count("triangles", run.counts.triangles);
             r.count("pixels_shaded", static_cast<std::size_t>(run.counts.tiles.shaded));
-            const fast::StageTimes& t = renderer.times();
+            const fast::StageTimes& t = run.median_stages;
             r.count("vertex_ms", t.vertex);
             r.count("setup_ms", t.setup);
             r.count("binning_ms", t.binning);
@@ -89,7 +67,7 @@ void bind_lesson12(py::module_ m) {
         py::arg("tile_size") = defaults.tile_size,
         "12_fast: lesson 07's picture from the fast path, the camera orbiting the target over "
         "frames (the last is the view asked for); counts give the median ms per frame, the "
-        "first excluded, and the last frame's stage times");
+        "first excluded, and each stage's median");
 }
 
 }  // namespace py_rl
