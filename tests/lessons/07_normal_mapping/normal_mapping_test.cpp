@@ -216,6 +216,36 @@ TEST(NormalMappingTest, ZeroAreaUvTrianglesGetAFallbackFrame) {
         expect_orthonormal(corner_tangents(mesh, normals, m), normals);
 }
 
+// docs/07_normal_mapping.md, "A worked example": every number of it.
+TEST(WorkedExample, TheTangentFrameAndTexelOfThePage) {
+    const rl::Mesh mesh = rl::parse_obj(
+        "v 0 0 0\nv 2 0 0\nv 0 0 -1\nvt 0 0\nvt 0.5 0\nvt 0 0.25\n"
+        "vn 0 1 0\nf 1/1/1 2/2/1 3/3/1\n",
+        "", "worked.obj");
+    const FaceFrame frame = face_frame(mesh, mesh.faces[0]);
+    ASSERT_TRUE(frame.valid);
+    EXPECT_NEAR(rl::length(frame.tangent - rl::vec3{1, 0, 0}), 0, 1e-6f) << frame.tangent;
+    EXPECT_NEAR(rl::length(frame.bitangent - rl::vec3{0, 0, -1}), 0, 1e-6f) << frame.bitangent;
+    const std::vector<rl::vec3> normals = shading::corner_normals(mesh, shading::Weighting::angle);
+    const rl::vec4 t = corner_tangents(mesh, normals, TangentMethod::split)[0];
+    EXPECT_EQ(t, (rl::vec4{1, 0, 0, 1}));  // T' and w = +1: right-handed
+    const rl::vec3 m = decode_normal({191 / 255.0f, 128 / 255.0f, 221 / 255.0f, 1});
+    EXPECT_NEAR(m.x, 0.498f, 5e-4f);
+    EXPECT_NEAR(m.y, 0.004f, 5e-4f);
+    EXPECT_NEAR(m.z, 0.733f, 5e-4f);
+    EXPECT_NEAR(rl::length(m), 0.886f, 5e-4f);
+    // The shader's sum (normal_mapped.hpp): B rebuilt as w (N x T').
+    const rl::vec3 n{0, 1, 0}, tangent{t.x, t.y, t.z}, b = rl::cross(n, tangent) * t.w;
+    const rl::vec3 world = (tangent * m.x + b * m.y + n * m.z) / rl::length(m);
+    EXPECT_NEAR(world.x, 0.562f, 5e-4f);
+    EXPECT_NEAR(world.y, 0.827f, 5e-4f);
+    EXPECT_NEAR(world.z, -0.004f, 5e-4f);
+    EXPECT_NEAR(std::acos(world.y) * 180 / 3.14159265f, 34.2f, 0.05f);
+    const rl::vec3 light = rl::normalize(rl::vec3{0.3f, 0.5f, 1});
+    EXPECT_NEAR(rl::dot(world, light), 0.499f, 5e-4f);
+    EXPECT_NEAR(rl::dot(n, light), 0.432f, 5e-4f);
+}
+
 TEST(NormalMappingTest, SeamsAndPolesOfTheGlobeGetFiniteOrthonormalFrames) {
     std::vector<std::string> warnings;
     const rl::Mesh globe = rl::load_obj(rl::project_model("globe"), &warnings);
