@@ -8,24 +8,10 @@
 The API is documented in docs/python.md.
 """
 
-from ._core import (  # noqa: F401  (the package's API)
-    Camera,
-    Mesh,
-    Result,
-    load_mesh,
-    read_image,
-    lesson00,
-    lesson01,
-    lesson02,
-    lesson03,
-    lesson04,
-    lesson05,
-    lesson06,
-    lesson07,
-    lesson08,
-    lesson12,
-)
+from . import _core
+from ._core import Camera, Mesh, Result, load_mesh, read_image  # noqa: F401  (the package's API)
 from ._labs import run_lab as _run_lab
+from ._programs import LABS as _LABS, LESSONS as _LESSONS
 
 
 def _add_lab(module, lesson):
@@ -38,7 +24,10 @@ def _add_lab(module, lesson):
     module.lab = lab
 
 
-for _lesson, _module in [("01", lesson01), ("02", lesson02), ("03", lesson03),
-                         ("04", lesson04), ("05", lesson05), ("06", lesson06),
-                         ("07", lesson07), ("08", lesson08), ("12", lesson12)]:
-    _add_lab(_module, _lesson)
+# rasterlab.lesson00, rasterlab.lesson01, ...: the lessons python/CMakeLists.txt
+# lists, each with its lab() if the lesson has a lab program.
+for _lesson in _LESSONS:
+    _module = getattr(_core, f"lesson{_lesson}")
+    globals()[f"lesson{_lesson}"] = _module
+    if _lesson in _LABS:
+        _add_lab(_module, _lesson)

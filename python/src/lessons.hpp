@@ -5,19 +5,15 @@
 
 #include <pybind11/pybind11.h>
 
+#include "lesson_list.hpp"  // made by python/CMakeLists.txt
+
 namespace py_rl {
 
 namespace py = pybind11;
 
-void bind_lesson00(py::module_ m);
-void bind_lesson01(py::module_ m);
-void bind_lesson02(py::module_ m);
-void bind_lesson03(py::module_ m);
-void bind_lesson04(py::module_ m);
-void bind_lesson05(py::module_ m);
-void bind_lesson06(py::module_ m);
-void bind_lesson07(py::module_ m);
-void bind_lesson08(py::module_ m);
-void bind_lesson12(py::module_ m);
+// bind_lesson00(), bind_lesson01(), ...: one per lesson of python/CMakeLists.txt's list.
+#define RASTERLAB_DECLARE_BIND(number, title) void bind_lesson##number(py::module_ m);
+RASTERLAB_PYTHON_LESSONS(RASTERLAB_DECLARE_BIND)
+#undef RASTERLAB_DECLARE_BIND
 
 }  // namespace py_rl

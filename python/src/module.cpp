@@ -47,14 +47,8 @@ PYBIND11_MODULE(_core, m) {
             return r;
         },
         py::arg("path"), "Reads a TGA, PNG or JPG file as the lessons do, as a Result");
-    py_rl::bind_lesson00(m.def_submodule("lesson00", "Lesson 00: the framebuffer and TGA"));
-    py_rl::bind_lesson01(m.def_submodule("lesson01", "Lesson 01: lines"));
-    py_rl::bind_lesson02(m.def_submodule("lesson02", "Lesson 02: triangles"));
-    py_rl::bind_lesson03(m.def_submodule("lesson03", "Lesson 03: the z-buffer"));
-    py_rl::bind_lesson04(m.def_submodule("lesson04", "Lesson 04: textures"));
-    py_rl::bind_lesson05(m.def_submodule("lesson05", "Lesson 05: perspective and clipping"));
-    py_rl::bind_lesson06(m.def_submodule("lesson06", "Lesson 06: shading"));
-    py_rl::bind_lesson07(m.def_submodule("lesson07", "Lesson 07: normal mapping"));
-    py_rl::bind_lesson08(m.def_submodule("lesson08", "Lesson 08: shadows"));
-    py_rl::bind_lesson12(m.def_submodule("lesson12", "Lesson 12: the fast path"));
+    // rasterlab.lesson00, rasterlab.lesson01, ...: python/CMakeLists.txt's list.
+#define RASTERLAB_BIND(number, title) py_rl::bind_lesson##number(m.def_submodule("lesson" #number, title));
+    RASTERLAB_PYTHON_LESSONS(RASTERLAB_BIND)
+#undef RASTERLAB_BIND
 }
