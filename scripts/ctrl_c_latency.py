@@ -5,16 +5,17 @@ and the seconds from the signal to its KeyboardInterrupt are printed, three
 runs each. The table of docs/python.md#ctrl-c comes from this. Run it on an
 idle machine: `/usr/bin/python3 scripts/ctrl_c_latency.py [build]`."""
 
+import os
 import pathlib
 import signal
 import subprocess
 import sys
 import time
 
+# The child: runs one call, and says whether it finished or was interrupted,
+# and when (python/tests/test_interrupts.py runs it too).
 CHILD = r"""
-import sys, time
-sys.path.insert(0, sys.argv[2])
-import rasterlab
+import sys, time, rasterlab
 call = eval("lambda: " + sys.argv[1])
 print("started", flush=True)
 try:
@@ -36,8 +37,9 @@ CALLS = [("rasterlab.lesson12.render(frames=1000)", 0.5),
 
 
 def latency(module_dir, expression, after):
-    child = subprocess.Popen([sys.executable, "-c", CHILD, expression, module_dir],
-                             stdout=subprocess.PIPE, text=True)
+    child = subprocess.Popen([sys.executable, "-c", CHILD, expression],
+                             env=dict(os.environ, PYTHONPATH=module_dir), stdout=subprocess.PIPE,
+                             text=True)
     if child.stdout.readline().strip() != "started":
         raise SystemExit(f"{expression}: the child did not start")
     time.sleep(after)

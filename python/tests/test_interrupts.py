@@ -5,6 +5,7 @@ render returns; and an interrupted save writes
 nothing. Each runs in a child process, sent SIGINT as Ctrl-C sends it."""
 
 import os
+import pathlib
 import signal
 import subprocess
 import sys
@@ -12,16 +13,8 @@ import time
 
 import pytest
 
-CHILD = r"""
-import sys, time, rasterlab
-call = eval("lambda: " + sys.argv[1])
-print("started", flush=True)
-try:
-    call()
-    print("finished", time.monotonic(), flush=True)
-except KeyboardInterrupt:
-    print("interrupted", time.monotonic(), flush=True)
-"""
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scripts"))
+from ctrl_c_latency import CHILD  # noqa: E402  (the child that runs one call)
 
 BOUND = 5.0  # seconds from SIGINT to KeyboardInterrupt: generous
 
