@@ -1,6 +1,6 @@
 #include "overdraw.hpp"
 
-#include "02_triangles/lab/triangle_measure.hpp"
+#include "fans.hpp"
 
 namespace triangles {
 

@@ -32,11 +32,6 @@ int perturbed_side(Exact a, Exact b, Exact p) {
     return sign(-dx);               // the -e^2 term: d/dy is dx
 }
 
-rl::vec2 on_grid(double x, double y) {
-    return {static_cast<float>(std::round(x * 256.0) / 256.0),
-            static_cast<float>(std::round(y * 256.0) / 256.0)};
-}
-
 }  // namespace
 
 // [doc:reference-coverage]
@@ -135,9 +130,9 @@ std::vector<ScreenTriangle> random_triangles(int count, double area, int size, s
         if (extent.x >= size || extent.y >= size) continue;
         const rl::dvec2 shift{random.uniform(0, size - extent.x) - lo.x,
                               random.uniform(0, size - extent.y) - lo.y};
-        ScreenTriangle t{{on_grid(p[0].x + shift.x, p[0].y + shift.y),
-                          on_grid(p[1].x + shift.x, p[1].y + shift.y),
-                          on_grid(p[2].x + shift.x, p[2].y + shift.y)}};
+        ScreenTriangle t{{on_subpixel_grid(p[0].x + shift.x, p[0].y + shift.y),
+                          on_subpixel_grid(p[1].x + shift.x, p[1].y + shift.y),
+                          on_subpixel_grid(p[2].x + shift.x, p[2].y + shift.y)}};
         if (random.uniform() < 0.5) std::swap(t.v[1], t.v[2]);
         out.push_back(t);
     }
@@ -159,16 +154,6 @@ std::vector<ScreenTriangle> tie_triangles(int count, int size, std::uint64_t see
     return out;
 }
 
-std::vector<ScreenTriangle> disc_fan(rl::vec2 centre, float radius, int slices) {
-    std::vector<ScreenTriangle> out;
-    auto rim = [&](int i) {
-        const double angle = 2 * std::numbers::pi * i / slices;
-        return on_grid(centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle));
-    };
-    for (int i = 0; i < slices; ++i) out.push_back({{centre, rim(i), rim(i + 1)}});
-    return out;
-}
-
 std::vector<ScreenTriangle> jittered_grid(int cells, int size, float margin, std::uint64_t seed) {
     rl::SplitMix64 random(seed);
     const double step = (size - 2.0 * margin) / cells;
@@ -178,8 +163,8 @@ std::vector<ScreenTriangle> jittered_grid(int cells, int size, float margin, std
             const bool inner = i > 0 && j > 0 && i < cells && j < cells;
             const double jx = inner ? std::floor(random.uniform(-4, 5)) * 0.5 : 0;
             const double jy = inner ? std::floor(random.uniform(-4, 5)) * 0.5 : 0;
-            points.push_back(
-                on_grid(std::round(margin + i * step) + jx, std::round(margin + j * step) + jy));
+            points.push_back(on_subpixel_grid(std::round(margin + i * step) + jx,
+                                              std::round(margin + j * step) + jy));
         }
     auto at = [&](int i, int j) { return points[static_cast<std::size_t>(j * (cells + 1) + i)]; };
     std::vector<ScreenTriangle> out;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "02_triangles/fans.hpp"  // disc_fan, on_subpixel_grid
 #include "02_triangles/raster.hpp"
 #include "rasterlab/image.hpp"
 
@@ -59,9 +60,6 @@ std::vector<ScreenTriangle> random_triangles(int count, double area, int size, s
 // Small triangles whose vertices lie on pixel centres and corners, so that
 // many centres fall exactly on edges: the tie rule's test.
 std::vector<ScreenTriangle> tie_triangles(int count, int size, std::uint64_t seed);
-
-// A disc cut into `slices` triangles meeting at a centre that lies on a pixel centre.
-std::vector<ScreenTriangle> disc_fan(rl::vec2 centre, float radius, int slices);
 
 // A grid of `cells` x `cells` quads, each split in two, over [margin, size -
 // margin]^2, inner vertices moved by multiples of half a pixel.
