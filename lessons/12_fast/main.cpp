@@ -17,7 +17,7 @@
 #include "rasterlab/main_guard.hpp"
 #include "renderer.hpp"
 #ifdef RASTERLAB_LLVMPIPE
-#include "lab/llvmpipe_peer.hpp"
+#include "peer/llvmpipe_peer.hpp"
 #endif
 
 int main(int argc, char** argv) {

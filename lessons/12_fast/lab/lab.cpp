@@ -20,9 +20,9 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <set>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include "05_perspective/view_options.hpp"
@@ -36,7 +36,7 @@
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/transform.hpp"
 #ifdef RASTERLAB_LLVMPIPE
-#include "llvmpipe_peer.hpp"
+#include "12_fast/peer/llvmpipe_peer.hpp"
 #endif
 
 namespace {
