@@ -3,7 +3,7 @@
 // interpolated and kept in range, against the nearest depth drawn so far.
 //
 //   const float z = zbuffer::interpolate_depth(weights, z0, z1, z2);
-//   if (zbuffer::passes_depth_test(depth, x, y, z)) colour.at(x, y) = c;
+//   if (zbuffer::test_and_store_depth(depth, x, y, z)) colour.at(x, y) = c;  // stored if nearer
 #pragma once
 
 #include "rasterlab/named_enum.hpp"
@@ -19,7 +19,7 @@ namespace zbuffer {
 // [doc:depth-test]
 // The depth test `less`: when z is nearer than what the buffer holds at
 // (x, y), store it and return true; otherwise leave the buffer alone.
-inline bool passes_depth_test(rl::FloatImage& depth, int x, int y, float z) {
+inline bool test_and_store_depth(rl::FloatImage& depth, int x, int y, float z) {
     float& nearest = depth.at(x, y);
     if (!(z < nearest)) return false;
     nearest = z;

@@ -40,7 +40,7 @@ void draw_zbuffer(const std::vector<SceneTriangle>& scene, Frame& frame) {
             screen(t), frame.colour.width(), frame.colour.height(), [&](int x, int y, rl::vec3 b) {
                 // Window depth is affine in screen space: interpolate it linearly.
                 const float z = interpolate_depth(b, t.v[0].z, t.v[1].z, t.v[2].z);
-                if (!passes_depth_test(frame.depth, x, y, z)) return;
+                if (!test_and_store_depth(frame.depth, x, y, z)) return;
                 frame.colour.at(x, y) = t.colour;
                 frame.ids.at(x, y) = t.id;
             });

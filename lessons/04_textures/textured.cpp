@@ -60,7 +60,7 @@ triangles::DrawCounts draw_textured(zbuffer::Frame& frame, const rl::Mesh& mesh,
     const auto fragment_stage = [&](const triangles::WindowTriangle& t, int x, int y, rl::vec3 b) {
         // Lesson 03's depth test first: a hidden pixel costs no texture lookup.
         const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
-        if (!zbuffer::passes_depth_test(frame.depth, x, y, z)) return;
+        if (!zbuffer::test_and_store_depth(frame.depth, x, y, z)) return;
         const rl::Face& face = mesh.faces[static_cast<std::size_t>(t.face)];
         const rl::vec2 uv[3] = {texture_coordinates(mesh, face, 0, options),
                                 texture_coordinates(mesh, face, 1, options),

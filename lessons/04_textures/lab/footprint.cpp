@@ -74,7 +74,7 @@ MeshFootprint mesh_footprint_average(const rl::Mesh& mesh, const rl::Image& text
         triangles::rasterize_edge(sub_pixels, fine, fine, [&](int x, int y, rl::vec3 b) {
             const float z =
                 zbuffer::interpolate_depth(b, face.window[0].z, face.window[1].z, face.window[2].z);
-            if (!zbuffer::passes_depth_test(depth, x, y, z)) return;
+            if (!zbuffer::test_and_store_depth(depth, x, y, z)) return;
             face_at.at(x, y) = static_cast<int>(f);
             uv_at.at(x, y) = triangles::interpolate(b, face.uv[0], face.uv[1], face.uv[2]);
         });
