@@ -48,7 +48,8 @@ PYBIND11_MODULE(_core, m) {
         },
         py::arg("path"), "Reads a TGA, PNG or JPG file as the lessons do, as a Result");
     // rasterlab.lesson00, rasterlab.lesson01, ...: python/CMakeLists.txt's list.
-#define RASTERLAB_BIND(number, title) py_rl::bind_lesson##number(m.def_submodule("lesson" #number, title));
+#define RASTERLAB_BIND(number, title) \
+    py_rl::bind_lesson##number(m.def_submodule("lesson" #number, title));
     RASTERLAB_PYTHON_LESSONS(RASTERLAB_BIND)
 #undef RASTERLAB_BIND
 }
