@@ -136,6 +136,16 @@ def finish(figure, axes, options, rows, before_save=None):
     print(f"wrote {options.svg}")
 
 
+def tick_label(value):
+    """A tick's text, short enough that neighbours on a log axis do not run
+    into each other: 16128 as 16.1k, 1996570 as 2M (below 10 000 as it is)."""
+    if abs(value) >= 1e6:
+        return f"{value / 1e6:.3g}M"
+    if abs(value) >= 1e4:
+        return f"{value / 1e3:.3g}k"
+    return f"{value:g}"
+
+
 def scale_axes(axes, options, rows):
     from matplotlib.ticker import NullLocator
 
@@ -146,7 +156,7 @@ def scale_axes(axes, options, rows):
     if options.xticks_at_data:
         values = sorted({number(r[options.x]) for r in rows})
         axes.set_xticks(values)
-        axes.set_xticklabels([f"{v:g}" for v in values])
+        axes.set_xticklabels([tick_label(v) for v in values])
         axes.minorticks_off()
     if options.logy:
         ys = [number(r[y]) for r in rows for y in options.y.split(",")]
