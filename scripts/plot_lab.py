@@ -178,14 +178,15 @@ def scale_axes(axes, options, rows):
             axes.set_yscale("log")
             plain_log_ticks(axes.yaxis, min(positive), max(positive))
     axes.set_xlabel(options.xlabel or options.x, fontsize=8 if options.panel else None)
-    axes.set_ylabel(options.ylabel or options.y, fontsize=8 if options.panel else None)
+    if not options.bars:  # (bars are named on the y axis itself)
+        axes.set_ylabel(options.ylabel or options.y, fontsize=8 if options.panel else None)
     axes.grid(True, which="both", alpha=0.3)
 
 
-def panel_grid(plt, count, width, height):
-    """`count` small charts, two to a row, on shared scales: the figure and
-    the axes in use (the spare one of an odd count hidden)."""
-    columns_n = min(2, count)
+def panel_grid(plt, count, width, height, columns=2):
+    """`count` small charts, `columns` to a row, on shared scales: the figure
+    and the axes in use (a spare one of an odd count hidden)."""
+    columns_n = min(columns, count)
     rows_n = math.ceil(count / columns_n)
     figure, grid = plt.subplots(rows_n, columns_n, figsize=(width * columns_n, height * rows_n + 0.6),
                                 sharex=True, sharey=True, squeeze=False)
@@ -311,6 +312,45 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys):
     return labels, all_points
 
 
+def bars_with_fronts(axes, rows, options, label, key, front_keys):
+    """The rows as horizontal bars of their time, top to bottom in the CSV's
+    order, each named by its label and its error written at its end; the best
+    trade-offs (found as scatter_with_fronts finds them) drawn dark. For a
+    sequence of steps whose errors are mostly equal, where a scatter piles
+    every point on one line."""
+    groups = {}
+    for row in rows:
+        groups.setdefault(row[options.group] if options.group else "", []).append(row)
+    for members in groups.values():
+        points = [(number(r[options.x]), number(r[options.y])) for r in members]
+        spreads = None
+        if options.x_spread:
+            low, high = options.x_spread.split(",")
+            spreads = [(number(r[low]), number(r[high])) for r in members]
+        front_keys.update(key(members[i]) for i in pareto_front(points, spreads))
+    shown = [c for c in label if c not in (options.group, options.panel)]
+    positions = list(range(len(rows)))[::-1]  # the first row at the top
+    times = [number(r[options.x]) for r in rows]
+    best = [key(r) in front_keys for r in rows]
+    axes.barh(positions, times, color=["C0" if b else "#9ab8d8" for b in best], height=0.7, zorder=2)
+    if options.x_spread:
+        low, high = options.x_spread.split(",")
+        axes.errorbar(times, positions,
+                      xerr=[[max(t - number(r[low]), 0) for t, r in zip(times, rows)],
+                            [max(number(r[high]) - t, 0) for t, r in zip(times, rows)]],
+                      fmt="none", ecolor="0.2", elinewidth=0.8, zorder=3)
+    ends = times  # the text goes after the bar, or after its whisker
+    if options.x_spread:
+        ends = [max(t, number(r[options.x_spread.split(",")[1]])) for t, r in zip(times, rows)]
+    for position, end, row in zip(positions, ends, rows):
+        axes.annotate(f"{options.y_short} {number(row[options.y]):g}", (end, position),
+                      textcoords="offset points", xytext=(5, -3), fontsize=7, color="0.25")
+    axes.set_yticks(positions)
+    axes.set_yticklabels([" ".join(r[c] for c in shown) for r in rows], fontsize=7)
+    axes.set_ylim(-0.6, len(rows) - 0.4)
+    return [], []
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("csv", type=pathlib.Path)
@@ -335,6 +375,10 @@ def main():
     parser.add_argument("--columns", help="columns of the table (default: all)")
     parser.add_argument("--where", action="append", default=[], metavar="COLUMN=VALUE",
                         help="draw and tabulate only the rows with this value (repeatable)")
+    parser.add_argument("--bars", action="store_true",
+                        help="draw each row as a bar of its time, its error written beside it "
+                             "(for steps whose errors are mostly equal)")
+    parser.add_argument("--y-short", default="error", help="with --bars: the error's name by each bar")
     parser.add_argument("--xticks-at-data", action="store_true",
                         help="one x tick at each value the data has (sizes, distances)")
     options = parser.parse_args()
@@ -378,7 +422,10 @@ def main():
     for row in rows:
         panels.setdefault(row[options.panel] if options.panel else "", []).append(row)
 
-    if options.panel:  # one small chart per value, side by side, two to a row, on shared scales
+    if options.panel and options.bars:  # one chart per value, one above the other
+        tallest = max(len(r) for r in panels.values())
+        figure, all_axes, _ = panel_grid(plt, len(panels), 9.0, 0.28 * tallest + 1.2, columns=1)
+    elif options.panel:  # one small chart per value, side by side, two to a row, on shared scales
         figure, all_axes, _ = panel_grid(plt, len(panels), 5.2, 3.6)
     else:
         figure, single = plt.subplots(figsize=(8.5, 5))
@@ -386,13 +433,18 @@ def main():
     front_keys = set()
     placements = []
     for axes, (panel, panel_rows) in zip(all_axes, panels.items()):
-        labels, points = scatter_with_fronts(axes, panel_rows, options, label, key, front_keys)
+        draw = bars_with_fronts if options.bars else scatter_with_fronts
+        labels, points = draw(axes, panel_rows, options, label, key, front_keys)
         placements.append((axes, labels, points))
         if options.panel:
             axes.set_title(f"{options.panel} {panel}", fontsize=9)
-    title = options.title + ("\n(circled: best trade-offs; bars: fastest to slowest run;\n"
-                             "times within 15% or with overlapping runs are ties)" if options.x_spread else
-                             "\n(circled: best trade-offs; times within 15% count as ties)")
+    if options.bars:
+        title = options.title + ("\n(dark: best trade-offs; whiskers: fastest to slowest run; "
+                                 "times within 15% or with overlapping runs are ties)")
+    else:
+        title = options.title + ("\n(circled: best trade-offs; bars: fastest to slowest run;\n"
+                                 "times within 15% or with overlapping runs are ties)" if options.x_spread else
+                                 "\n(circled: best trade-offs; times within 15% count as ties)")
     if options.panel:
         figure.suptitle(title, fontsize=10)
     else:

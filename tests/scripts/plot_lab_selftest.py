@@ -22,11 +22,11 @@ with tempfile.TemporaryDirectory() as folder:
                    "flat,coarse,30,5\n"
                    "tilted,fine,30,5\n"
                    "tilted,coarse,10,1\n")
-    # The same within each --panel (a small chart per value).
-    for split in ("--group", "--panel"):
+    # The same within each --panel (a small chart per value), and drawn as bars.
+    for split in (["--group"], ["--panel"], ["--bars", "--panel"]):
         table = folder / "lab.md"
         subprocess.run([sys.executable, str(plot), str(csv), "--x", "ns", "--y", "error",
-                        "--label", "method", split, "tilt", "--svg", str(folder / "lab.svg"),
+                        "--label", "method", *split, "tilt", "--svg", str(folder / "lab.svg"),
                         "--table", str(table)], check=True)
         marks = {tuple(cell.strip() for cell in line.strip("|").split("|")[:2]):
                  line.strip("|").split("|")[-1].strip()
