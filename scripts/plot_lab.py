@@ -277,6 +277,16 @@ def draw_lines(plt, rows, options):
         print(f"wrote {options.table}")
 
 
+def points_and_spreads(rows, options):
+    """Each row's (time, error), and its (fastest, slowest) run with
+    --x-spread (None without)."""
+    points = [(number(r[options.x]), number(r[options.y])) for r in rows]
+    if not options.x_spread:
+        return points, None
+    low, high = options.x_spread.split(",")
+    return points, [(number(r[low]), number(r[high])) for r in rows]
+
+
 def scatter_with_fronts(axes, rows, options, label, key, front_keys):
     """The rows as labelled points, coloured by group, each group's best
     trade-offs circled and joined; their keys are added to front_keys."""
@@ -286,7 +296,7 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys):
     labels, all_points = [], []
     for index, (group, members) in enumerate(groups.items()):
         colour = f"C{index}"
-        points = [(number(r[options.x]), number(r[options.y])) for r in members]
+        points, spreads = points_and_spreads(members, options)
         axes.scatter([p[0] for p in points], [p[1] for p in points], color=colour, s=36, zorder=3,
                      label=f"{options.group} {group}" if options.group else None)
         shown = [c for c in label if c not in (options.group, options.panel)]
@@ -295,10 +305,7 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys):
                                         textcoords="offset points", xytext=(6, 4),
                                         fontsize=7 if options.panel else 8))
             all_points.append((x, y))
-        spreads = None
-        if options.x_spread:  # each point's fastest and slowest run, drawn as a bar
-            low, high = options.x_spread.split(",")
-            spreads = [(number(r[low]), number(r[high])) for r in members]
+        if spreads:  # each point's fastest and slowest run, drawn as a bar
             axes.errorbar([p[0] for p in points], [p[1] for p in points],
                           xerr=[[max(p[0] - lo, 0) for p, (lo, hi) in zip(points, spreads)],
                                 [max(hi - p[0], 0) for p, (lo, hi) in zip(points, spreads)]],
@@ -322,12 +329,7 @@ def bars_with_fronts(axes, rows, options, label, key, front_keys):
     for row in rows:
         groups.setdefault(row[options.group] if options.group else "", []).append(row)
     for members in groups.values():
-        points = [(number(r[options.x]), number(r[options.y])) for r in members]
-        spreads = None
-        if options.x_spread:
-            low, high = options.x_spread.split(",")
-            spreads = [(number(r[low]), number(r[high])) for r in members]
-        front_keys.update(key(members[i]) for i in pareto_front(points, spreads))
+        front_keys.update(key(members[i]) for i in pareto_front(*points_and_spreads(members, options)))
     shown = [c for c in label if c not in (options.group, options.panel)]
     positions = list(range(len(rows)))[::-1]  # the first row at the top
     times = [number(r[options.x]) for r in rows]
