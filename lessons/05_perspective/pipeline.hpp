@@ -335,106 +335,125 @@ void store(RenderTarget<Pixels...>& target, int column, int y, const Outputs& ou
     }
 }
 
+// The window depth at weights b: interpolated with the plain weights (window
+// depth is linear on screen), plus the target's bias (lesson 08's), kept in [0, 1].
+template <Interpolable V, class F>
+float window_depth(const TriangleSetup<V, F>& t, rl::vec3 b, const zbuffer::DepthState& state) {
+    const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
+    const float bias = state.constant_bias + state.slope_bias * t.depth_slope;
+    return bias != 0 ? std::clamp(z + bias, 0.0f, 1.0f) : z;
+}
+
+// [doc:fragment-operations]
+// One covered sample of triangle t, at window depth z, stored at (column, y)
+// of the target: the depth test, the fragment stage (its varyings at weights
+// b, pixel (x, y)) and the store of its outputs and depth. The test runs
+// before the fragment stage, as a GPU's early depth test does; a fragment the
+// program discards writes neither colour nor depth. Returns whether it was stored.
+template <class P, Interpolable V, class F, class... Pixels>
+bool fragment_operations(const P& program, const TriangleSetup<V, F>& t, int x, int y, float z,
+                         rl::vec3 b, RenderTarget<Pixels...>& target, int column) {
+    rl::FloatImage* const depth = target.depth();
+    const zbuffer::DepthState& state = target.depth_state;
+    if (depth && !zbuffer::depth_passes(state.compare, z, depth->at(column, y))) return false;
+    if constexpr (ProgramTraits<P>::may_discard) {
+        const auto kept = program.fragment(fragment_at(t, x, y, z, b));
+        if (!kept) return false;
+        if constexpr (sizeof...(Pixels) > 0) store(target, column, y, *kept);
+    } else if constexpr (sizeof...(Pixels) > 0) {
+        store(target, column, y, program.fragment(fragment_at(t, x, y, z, b)));
+    }
+    if (depth && state.write) depth->at(column, y) = z;
+    return true;
+}
+// [/doc:fragment-operations]
+
 // [doc:rasterize-triangle]
-// Rasterizes one set-up triangle once per sample of the target (the
-// triangle moved by minus the sample's offset, so that the rasterizer's
-// pixel-centre test tests the sample), then per covered sample: depth
-// (interpolated with the plain weights, as window depth is linear on screen;
-// biased; compared), the fragment stage (with the varyings at the pixel's
-// centre, so every sample of a pixel shades alike), and the store. The depth
-// test runs before the fragment stage, unless the program may discard: then
-// only a fragment it keeps writes depth. Returns false if refused.
+// Stages 5-8 for one set-up triangle, one sample per pixel at its centre:
+// lesson 02's rasterizer finds the covered pixels within the options' tile,
+// and each goes through the fragment operations. Returns false if refused.
 template <class P, Interpolable V, class F, class... Pixels>
 bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
                         RenderTarget<Pixels...>& target, const PipelineOptions& options,
                         PipelineCounts& counts) {
-    constexpr bool has_colour = sizeof...(Pixels) > 0, discards = ProgramTraits<P>::may_discard;
-    rl::FloatImage* const depth = target.depth();
-    const zbuffer::DepthState& state = target.depth_state;
-    const float bias = state.constant_bias + state.slope_bias * t.depth_slope;
-    const int samples = target.samples();
-    const triangles::PixelRect rect =
-        options.tile.value_or(triangles::PixelRect{0, 0, target.width(), target.height()});
-    // The weights at pixel centres, for samples that are not at the centre.
-    const std::optional<triangles::PixelWeights> centres =
-        samples == 1
-            ? std::nullopt
-            : std::optional<triangles::PixelWeights>(std::in_place, options.raster, t.screen());
-    counts.visited += box_samples(t.screen(), rect) * static_cast<std::size_t>(samples);
-    bool ok = true;
-    for (int s = 0; s < samples; ++s) {
-        const rl::vec2 offset = sample_offset(samples, s);
-        ok &= triangles::rasterize(
-            options.raster, t.screen(offset), rect, [&](int x, int y, rl::vec3 b) {
-                const int column = x * samples + s;
-                float z =
-                    zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
-                if (bias != 0) z = std::clamp(z + bias, 0.0f, 1.0f);
-                if (depth && !zbuffer::depth_passes(state.compare, z, depth->at(column, y))) return;
-                if constexpr (!discards) {
-                    if (depth && state.write) depth->at(column, y) = z;
-                }
-                if constexpr (has_colour || discards) {
-                    const rl::vec3 centre = centres ? centres->at(x, y) : b;
-                    const Fragment<V, F> fragment = fragment_at(t, x, y, z, centre);
-                    if constexpr (discards) {
-                        const auto kept = program.fragment(fragment);
-                        if (!kept) return;  // discarded: neither colour nor depth
-                        if (depth && state.write) depth->at(column, y) = z;
-                        if constexpr (has_colour) store(target, column, y, *kept);
-                    } else {
-                        store(target, column, y, program.fragment(fragment));
-                    }
-                }
-                ++counts.fragments;
-            });
-    }
-    return ok;
+    const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+    counts.visited += box_samples(t.screen(), rect);
+    return triangles::rasterize(options.raster, t.screen(), rect, [&](int x, int y, rl::vec3 b) {
+        const float z = window_depth(t, b, target.depth_state);
+        if (fragment_operations(program, t, x, y, z, b, target, x)) ++counts.fragments;
+    });
 }
 // [/doc:rasterize-triangle]
 
+// [doc:coverage]
+// How draw() turns a set-up triangle into stored samples: its coverage
+// policy. Lesson 05's is one sample at each pixel's centre, the fragment
+// stage run once for it. A later lesson plugs in its own (several samples a
+// pixel, the fragment stage run once per sample or once per pixel) as any
+// type with this call, without changing draw(); it counts what it visits and
+// stores in `counts`, as rasterize_triangle does, and returns false for a
+// triangle the rasterizer refused.
+struct OneSamplePerPixel {
+    template <class P, class T, class... Pixels>
+    bool operator()(const T& t, const P& program, RenderTarget<Pixels...>& target,
+                    const PipelineOptions& options, PipelineCounts& counts) const {
+        if (target.samples() != 1)
+            throw std::invalid_argument(
+                "a target of several samples a pixel needs a coverage policy that fills them");
+        return rasterize_triangle(t, program, target, options, counts);
+    }
+};
+// [/doc:coverage]
+
 // [doc:assemble]
-// Stages 1-4 for every face of the geometry, for a target of width x height
-// pixels: each triangle that comes out, set up for the rasterizer, goes to
-// emit(t). Counts the faces, and those culled, clipped and wholly outside.
+// Stages 2-4 for one face, its corners out of the vertex stage, for a
+// target of width x height pixels whose clip planes are `planes`: each
+// triangle that comes out, set up for the rasterizer, goes to emit(t).
+// Counts the face if culled, clipped or wholly outside.
+template <Interpolable V, class F, class Emit>
+void assemble_face(const std::array<ClipVertex<V, F>, 3>& v, int face, const ClipPlanes& planes,
+                   int width, int height, const PipelineOptions& options, PipelineCounts& counts,
+                   Emit&& emit) {
+    // 2. Back faces culled by the sign of det[x y w]. Not "culled unless
+    // > 0": a face whose sign is NaN goes on, for the rasterizer to refuse.
+    if (options.cull != Cull::none) {
+        const double area = facing(v[0].position, v[1].position, v[2].position);
+        if (options.cull == Cull::back ? area <= 0 : area >= 0) {
+            ++counts.back_faces;
+            return;
+        }
+    }
+    // 3. Clipping: the face becomes a convex polygon, drawn as a fan.
+    const ClipPolygon<V> polygon = clip_face(v, planes, counts);
+    for (int i = 1; i + 1 < polygon.size; ++i)
+        // 4. Divide and viewport; the flat values come from the first vertex.
+        emit(set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
+                    polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
+                    options.interpolation, width, height));
+}
+
+// Stages 1-4 for every face of the geometry: the vertex stage, then the above.
 template <class Geometry, class P, class Emit>
 void assemble(const Geometry& geometry, const P& program, int width, int height,
               const PipelineOptions& options, PipelineCounts& counts, Emit&& emit) {
-    using V = typename P::Varyings;
     const ClipPlanes planes = clip_planes(options.clip, width, height);
     for (int face = 0; face < geometry.face_count(); ++face) {
         ++counts.faces;
         // 1. The vertex stage: each corner to clip space, with its varyings.
-        const std::array<ClipVertex<V, FlatOf<P>>, 3> v = {
+        const std::array<ClipVertex<typename P::Varyings, FlatOf<P>>, 3> v = {
             program.vertex(geometry.corner(face, 0)), program.vertex(geometry.corner(face, 1)),
             program.vertex(geometry.corner(face, 2))};
-        // 2. Back faces culled by the sign of det[x y w]. Not "culled unless
-        // > 0": a face whose sign is NaN goes on, for the rasterizer to refuse.
-        if (options.cull != Cull::none) {
-            const double area = facing(v[0].position, v[1].position, v[2].position);
-            if (options.cull == Cull::back ? area <= 0 : area >= 0) {
-                ++counts.back_faces;
-                continue;
-            }
-        }
-        // 3. Clipping: the face becomes a convex polygon, drawn as a fan.
-        const ClipPolygon<V> polygon = clip_face(v, planes, counts);
-        for (int i = 1; i + 1 < polygon.size; ++i)
-            // 4. Divide and viewport; the flat values come from the first vertex.
-            emit(set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
-                        polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
-                        options.interpolation, width, height));
+        assemble_face(v, face, planes, width, height, options, counts, emit);
     }
 }
 // [/doc:assemble]
 
 // [doc:draw]
 // Every face of the geometry through every stage, into the target.
-template <class Geometry, class P, class... Pixels>
+template <class Geometry, class P, class... Pixels, class Coverage = OneSamplePerPixel>
 PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pixels...>& target,
-                    const PipelineOptions& options = {}) {
-    const triangles::PixelRect whole =
-        options.tile.value_or(triangles::PixelRect{0, 0, target.width(), target.height()});
+                    const PipelineOptions& options = {}, const Coverage& coverage = {}) {
+    const triangles::PixelRect rect = options.tile.value_or(target.bounds());
     const double most_visited = options.max_overdraw > 0 ? options.max_overdraw * target.width() *
                                                                target.height() * target.samples()
                                                          : HUGE_VAL;
@@ -443,13 +462,13 @@ PipelineCounts draw(const Geometry& geometry, const P& program, RenderTarget<Pix
     assemble(geometry, program, target.width(), target.height(), options, counts,
              [&](const auto& t) {
                  // 5.-8. Rasterize, depth test, fragment stage, store; in bands
-                 // of rows, one row of margin for the samples' offsets, so
-                 // that a host (the Python module) can stop here.
+                 // of rows (one row of margin for samples off the centre), so
+                 // that a host (the Python module) can stop between them.
                  const bool ok = triangles::for_each_band(
-                     t.screen(), whole, 1, [&](const triangles::PixelRect& band) {
+                     t.screen(), rect, 1, [&](const triangles::PixelRect& band) {
                          PipelineOptions in_band = options;
                          in_band.tile = band;
-                         return rasterize_triangle(t, program, target, in_band, counts);
+                         return coverage(t, program, target, in_band, counts);
                      });
                  ++(ok ? counts.drawn : counts.refused);
                  if (static_cast<double>(counts.visited) > most_visited)

@@ -2,15 +2,18 @@
 // of colour attachments, each an image of its own pixel type (8-bit
 // rl::Rgba, float, linear rl::vec3 HDR, normals, ids ...), and an optional
 // depth attachment with its state (lesson 03's compare, write, clear, bias).
-// A target may hold several samples per pixel; resolve() averages them into
+// A target may hold several samples per pixel, which a coverage policy
+// other than lesson 05's fills (pipeline.hpp); resolve() averages them into
 // one image per attachment. A target with no colour attachment is a
 // depth-only pass (how a shadow map is rendered).
 //
-//   perspective::TargetOptions four;  four.samples = 4;
-//   perspective::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600, four);
-//   perspective::draw(geometry, program, frame, {});   // fragment() returns {rgba, normal}
-//   const rl::Image picture = perspective::resolve(frame.colour<0>(), frame.samples());
+//   perspective::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600);
+//   perspective::draw(geometry, program, frame);   // fragment() returns {rgba, normal}
 //   perspective::RenderTarget<> shadow_map(1024, 1024);  // depth only
+//   perspective::TargetOptions four;  four.samples = 4;
+//   perspective::ColourTarget smooth(800, 600, four, rl::kBackground);
+//   perspective::draw(geometry, program, smooth, {}, four_samples);  // a policy of 4 samples
+//   const rl::Image picture = perspective::resolve(smooth.colour(), smooth.samples());
 #pragma once
 
 #include <algorithm>
@@ -31,36 +34,8 @@
 
 namespace perspective {
 
-// Where the samples of a pixel lie, as offsets from its centre in pixels:
-// Direct3D's standard patterns for 1, 2, 4 and 8 samples (multiples of 1/16
-// pixel, so they sit exactly on the rasterizer's 1/256 grid).
 inline bool valid_sample_count(int samples) {
     return samples == 1 || samples == 2 || samples == 4 || samples == 8;
-}
-inline rl::vec2 sample_offset(int samples, int s) {
-    static constexpr float k = 1.0f / 16;
-    static constexpr std::array<rl::vec2, 2> two = {{{4 * k, 4 * k}, {-4 * k, -4 * k}}};
-    static constexpr std::array<rl::vec2, 4> four = {
-        {{-2 * k, -6 * k}, {6 * k, -2 * k}, {-6 * k, 2 * k}, {2 * k, 6 * k}}};
-    static constexpr std::array<rl::vec2, 8> eight = {{{1 * k, -3 * k},
-                                                       {-1 * k, 3 * k},
-                                                       {5 * k, 1 * k},
-                                                       {-3 * k, -5 * k},
-                                                       {-5 * k, 5 * k},
-                                                       {-7 * k, -1 * k},
-                                                       {3 * k, 7 * k},
-                                                       {7 * k, -7 * k}}};
-    const auto i = static_cast<std::size_t>(s);
-    switch (samples) {
-        case 2:
-            return two[i];
-        case 4:
-            return four[i];
-        case 8:
-            return eight[i];
-        default:
-            return {0, 0};
-    }
 }
 
 struct TargetOptions {
@@ -89,6 +64,7 @@ class RenderTarget {
     int width() const { return width_; }
     int height() const { return height_; }
     int samples() const { return samples_; }
+    triangles::PixelRect bounds() const { return {0, 0, width_, height_}; }
 
     // Between frames, what glClear does: every colour attachment back to the
     // given values and the depth to its state's clear value, in place (a

@@ -268,19 +268,36 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     start = Clock::now();
     s.triangles.clear();
     const perspective::PipelineOptions& pipeline = r.pipeline;
-    const perspective::ClipPlanes planes =
-        perspective::clip_planes(pipeline.clip, s.width, s.height);
     perspective::PipelineCounts pc;
     const double most_visited =
         pipeline.max_overdraw > 0 ? pipeline.max_overdraw * s.width * s.height : HUGE_VAL;
     double visited = 0;
+    const perspective::ClipPlanes planes =
+        perspective::clip_planes(pipeline.clip, s.width, s.height);
     for (std::size_t i = 0; i < s.models.size(); ++i) {
         if (!s.drawn[i]) continue;
+        const auto keep = [&](const Setup& t) {
+            FastTriangle& fast = s.triangles.emplace_back();
+            if (!fast_triangle(t, static_cast<std::uint32_t>(i), s.width, s.height, fast)) {
+                s.triangles.pop_back();
+                ++counts.refused;
+                return;
+            }
+            if (fast.empty()) {
+                s.triangles.pop_back();
+                return;
+            }
+            visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
+            if (visited > most_visited) perspective::throw_overdraw(most_visited);
+        };
         const FastModel& m = s.models[i];
         const bool mirrored = s.placed[i]->surface.view.mirrored;
         const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
         const std::size_t faces = m.indices.size() / 3;
         for (std::size_t f = 0; f < faces; ++f) {
+            // The corners of step 1: with the vertex cache, three indices into
+            // the distinct vertices, swapped as the surface swaps them when
+            // mirrored; without it, already in the surface's order.
             std::array<perspective::ClipVertex<Varyings>, 3> v;
             if (s.options.vertex_cache) {
                 const std::uint32_t* index = &m.indices[3 * f];
@@ -289,36 +306,12 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
             } else {
                 v = {vertices[3 * f], vertices[3 * f + 1], vertices[3 * f + 2]};
             }
-            if (pipeline.cull != perspective::Cull::none) {
-                const double area =
-                    perspective::facing(v[0].position, v[1].position, v[2].position);
-                if (pipeline.cull == perspective::Cull::back ? area <= 0 : area >= 0) {
-                    ++counts.back_faces;
-                    continue;
-                }
-            }
-            const perspective::ClipPolygon<Varyings> polygon =
-                perspective::clip_face(v, planes, pc);
-            for (int k = 1; k + 1 < polygon.size; ++k) {
-                const Setup t = perspective::set_up(
-                    polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(k)],
-                    polygon.vertices[static_cast<std::size_t>(k + 1)], perspective::NoFlat{},
-                    static_cast<int>(f), pipeline.interpolation, s.width, s.height);
-                FastTriangle& fast = s.triangles.emplace_back();
-                if (!fast_triangle(t, static_cast<std::uint32_t>(i), s.width, s.height, fast)) {
-                    s.triangles.pop_back();
-                    ++counts.refused;
-                    continue;
-                }
-                if (fast.empty()) {
-                    s.triangles.pop_back();
-                    continue;
-                }
-                visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
-                if (visited > most_visited) perspective::throw_overdraw(most_visited);
-            }
+            // Lesson 05's stages 2-4: cull, clip, divide and viewport, set up.
+            perspective::assemble_face(v, static_cast<int>(f), planes, s.width, s.height, pipeline,
+                                       pc, keep);
         }
     }
+    counts.back_faces = pc.back_faces;
     counts.clipped = pc.clipped;
     counts.outside = pc.outside;
     counts.triangles = s.triangles.size();

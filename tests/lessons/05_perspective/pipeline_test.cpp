@@ -260,23 +260,126 @@ struct Pattern {
     }
 };
 
-TEST(Pipeline, FourSamplesAllCoveredResolveToTheOneSampleImage) {
+// Two coverage policies of four samples a pixel, plugged into draw()'s seam
+// from outside lesson 05, as lesson 11 will plug in its own. Both use
+// Direct3D's standard 4-sample pattern (offsets from the pixel centre) and
+// shade with the varyings at the pixel's centre, so that a pixel whose
+// samples are all covered resolves to the one-sample image exactly.
+constexpr float kSixteenth = 1.0f / 16;
+constexpr std::array<rl::vec2, 4> kFourSamples = {{{-2 * kSixteenth, -6 * kSixteenth},
+                                                   {6 * kSixteenth, -2 * kSixteenth},
+                                                   {-6 * kSixteenth, 2 * kSixteenth},
+                                                   {2 * kSixteenth, 6 * kSixteenth}}};
+
+// Supersampling: the triangle rasterized once per sample (moved by minus the
+// sample's offset, so that the pixel-centre test tests the sample), and
+// every covered sample through lesson 05's fragment operations.
+struct FourSamplesEachShaded {
+    template <class P, class T, class... Pixels>
+    bool operator()(const T& t, const P& program, RenderTarget<Pixels...>& target,
+                    const PipelineOptions& options, PipelineCounts& counts) const {
+        const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+        const triangles::PixelWeights centres(options.raster, t.screen());
+        counts.visited += 4 * box_samples(t.screen(), rect);
+        bool ok = true;
+        for (int s = 0; s < 4; ++s)
+            ok &= triangles::rasterize(
+                options.raster, t.screen(kFourSamples[s]), rect, [&](int x, int y, rl::vec3 b) {
+                    const float z = window_depth(t, b, target.depth_state);
+                    if (fragment_operations(program, t, x, y, z, centres.at(x, y), target,
+                                            4 * x + s))
+                        ++counts.fragments;
+                });
+        return ok;
+    }
+};
+
+// Multisampling: coverage and depth per sample, the fragment stage once per
+// pixel with a sample that passed, its outputs stored in each such sample.
+struct FourSamplesShadedOnce {
+    template <class P, class T, class... Pixels>
+    bool operator()(const T& t, const P& program, RenderTarget<Pixels...>& target,
+                    const PipelineOptions& options, PipelineCounts& counts) const {
+        const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+        const int width = rect.x1 - rect.x0;
+        std::vector<float> passed(4 * static_cast<std::size_t>(width * (rect.y1 - rect.y0)), NAN);
+        const auto slot = [&](int x, int y, int s) -> float& {
+            return passed[static_cast<std::size_t>(4 * ((y - rect.y0) * width + x - rect.x0) + s)];
+        };
+        rl::FloatImage& depth = *target.depth();
+        counts.visited += 4 * box_samples(t.screen(), rect);
+        bool ok = true;
+        for (int s = 0; s < 4; ++s)
+            ok &= triangles::rasterize(options.raster, t.screen(kFourSamples[s]), rect,
+                                       [&](int x, int y, rl::vec3 b) {
+                                           const float z = window_depth(t, b, target.depth_state);
+                                           if (zbuffer::depth_passes(target.depth_state.compare, z,
+                                                                     depth.at(4 * x + s, y)))
+                                               slot(x, y, s) = z;
+                                       });
+        const triangles::PixelWeights centres(options.raster, t.screen());
+        for (int y = rect.y0; y < rect.y1; ++y)
+            for (int x = rect.x0; x < rect.x1; ++x) {
+                if (std::none_of(&slot(x, y, 0), &slot(x, y, 0) + 4,
+                                 [](float z) { return !std::isnan(z); }))
+                    continue;
+                const rl::vec3 b = centres.at(x, y);
+                const auto colour = program.fragment(
+                    fragment_at(t, x, y, window_depth(t, b, target.depth_state), b));
+                for (int s = 0; s < 4; ++s) {
+                    if (std::isnan(slot(x, y, s))) continue;
+                    store(target, 4 * x + s, y, colour);
+                    depth.at(4 * x + s, y) = slot(x, y, s);
+                    ++counts.fragments;
+                }
+            }
+        return ok;
+    }
+};
+
+// A program that counts its fragment stage's runs.
+struct CountedPattern : Pattern {
+    int* runs;
+    rl::Rgba fragment(const Fragment<rl::vec2>& f) const {
+        ++*runs;
+        return Pattern::fragment(f);
+    }
+};
+
+template <class Coverage>
+void expect_four_samples_resolve_as_one(const Coverage& coverage, int expected_runs) {
     // The texture-coordinate pattern of a triangle covering every sample.
     ColourTarget one(37, 23, {}, rl::kBackground), four(37, 23, with_samples(4), rl::kBackground);
     draw(covering_triangle(), Pattern{}, one);
-    const PipelineCounts counts = draw(covering_triangle(), Pattern{}, four);
+    int runs = 0;
+    const PipelineCounts counts =
+        draw(covering_triangle(), CountedPattern{{}, &runs}, four, {}, coverage);
     EXPECT_EQ(counts.fragments, 4u * 37u * 23u);
+    EXPECT_EQ(runs, expected_runs);
     EXPECT_EQ(resolve(four.colour(), four.samples()), one.colour());
     // and an edge: a pixel half covered resolves between the two colours.
     ColourTarget edge(4, 4, with_samples(4), rl::Rgba{0, 0, 0, 255});
     draw(ClipTriangles{{{rl::vec4{-1, -1, 0, 1}, rl::vec4{0.001f, -1, 0, 1},
                          rl::vec4{0.001f, 1, 0, 1}}}},
-         Constant{{255, 255, 255, 255}}, edge);
+         Constant{{255, 255, 255, 255}}, edge, {}, coverage);
     const rl::Image resolved = resolve(edge.colour(), 4);
     EXPECT_EQ(resolved.at(3, 0).r, 0);    // outside
     EXPECT_EQ(resolved.at(1, 0).r, 255);  // inside
     EXPECT_GT(resolved.at(0, 0).r, 0);    // on the slanted edge: some of its samples
     EXPECT_LT(resolved.at(0, 0).r, 255);
+}
+
+TEST(CoverageSeam, FourSamplesEachShadedResolveToTheOneSampleImage) {
+    expect_four_samples_resolve_as_one(FourSamplesEachShaded{}, 4 * 37 * 23);
+}
+
+TEST(CoverageSeam, FourSamplesShadedOncePerPixelResolveToTheOneSampleImage) {
+    expect_four_samples_resolve_as_one(FourSamplesShadedOnce{}, 37 * 23);
+}
+
+TEST(CoverageSeam, OneSamplePerPixelRefusesATargetOfSeveralSamples) {
+    ColourTarget four(8, 8, with_samples(4), rl::kBackground);
+    EXPECT_THROW(draw(covering_triangle(), Constant{{1, 2, 3, 255}}, four), std::invalid_argument);
 }
 
 TEST(Pipeline, SampleCountsOtherThanOneTwoFourEightAreRefused) {
