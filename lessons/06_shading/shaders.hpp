@@ -40,7 +40,7 @@ struct Uniforms {
     rl::vec3 eye;  // world space
     Lighting<float> lighting;
     const textures::MipChain* texture = nullptr;  // none: albedo `colour`
-    textures::SamplerState sampler;
+    textures::SamplerState sampler{};
     rl::vec3 colour{0.8f, 0.8f, 0.8f};  // linear albedo without a texture
 
     rl::vec3 world(rl::vec3 p) const { return (model_matrix * rl::extend(p, 1.0f)).xyz(); }

@@ -87,14 +87,12 @@ int main(int argc, char** argv) {
         lighting.lights.resize(1);  // the key light alone: one highlight to look at
         lighting.shininess = shininess;
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
-        const Uniforms u{rl::mat4::identity(),
-                         rl::mat3::identity(),
-                         perspective::view_projection(camera, aspect),
-                         camera.eye,
-                         lighting,
-                         nullptr,
-                         {},
-                         rl::vec3{0.8f, 0.35f, 0.2f}};
+        const Uniforms u{.model_matrix = rl::mat4::identity(),
+                         .normal_matrix = rl::mat3::identity(),
+                         .model_view_projection = perspective::view_projection(camera, aspect),
+                         .eye = camera.eye,
+                         .lighting = lighting,
+                         .colour = rl::vec3{0.8f, 0.35f, 0.2f}};
         const rl::Mesh sphere = uv_sphere(segments);
         const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
         const Surface surface(sphere, normals);

@@ -35,14 +35,12 @@ struct Case {
 
 rl::Image draw_sphere(const Setup& s, const Case& c) {
     perspective::ColourTarget frame = perspective::colour_target(s.size, s.size);
-    Uniforms u{rl::mat4::identity(),
-               rl::mat3::identity(),
-               perspective::view_projection(s.camera, 1.0f),
-               s.camera.eye,
-               s.lighting,
-               nullptr,
-               {},
-               s.albedo};
+    Uniforms u{.model_matrix = rl::mat4::identity(),
+               .normal_matrix = rl::mat3::identity(),
+               .model_view_projection = perspective::view_projection(s.camera, 1.0f),
+               .eye = s.camera.eye,
+               .lighting = s.lighting,
+               .colour = s.albedo};
     if (c.output == Output::naive)  // the albedo as the byte that stores it, taken as light
         u.colour = {linear_to_srgb(s.albedo.x), linear_to_srgb(s.albedo.y),
                     linear_to_srgb(s.albedo.z)};

@@ -195,14 +195,13 @@ int main(int argc, char** argv) {
         g.camera.fov_y = 50;
         g.camera.near = 0.5f;
         g.camera.far = 10;
-        g.uniforms = shading::Uniforms{rl::mat4::identity(),
-                                       rl::mat3::identity(),
-                                       perspective::view_projection(g.camera, 1.0f),
-                                       g.camera.eye,
-                                       shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f}),
-                                       &g.model.lit.model.texture,
-                                       {},
-                                       {}};
+        g.uniforms =
+            shading::Uniforms{.model_matrix = rl::mat4::identity(),
+                              .normal_matrix = rl::mat3::identity(),
+                              .model_view_projection = perspective::view_projection(g.camera, 1.0f),
+                              .eye = g.camera.eye,
+                              .lighting = shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f}),
+                              .texture = &g.model.lit.model.texture};
         const rl::Mesh& mesh = g.model.lit.model.mesh;
         std::vector<std::vector<rl::vec4>> frames;
         for (TangentMethod m : kTangentMethods)

@@ -129,14 +129,11 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     camera.near = 1;
     camera.far = 10;
     const rl::mat4 mvp = perspective::view_projection(camera, 1.0f) * mirror;
-    Uniforms u{mirror,
-               *normal_matrix(mirror),
-               mvp,
-               camera.eye,
-               default_lighting(rl::vec3{1, 0, 0.3f}),
-               nullptr,
-               {},
-               {0.8f, 0.8f, 0.8f}};
+    Uniforms u{.model_matrix = mirror,
+               .normal_matrix = *normal_matrix(mirror),
+               .model_view_projection = mvp,
+               .eye = camera.eye,
+               .lighting = default_lighting(rl::vec3{1, 0, 0.3f})};
     u.lighting.lights.resize(1);
     perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const perspective::PipelineCounts counts = draw_model(
@@ -144,6 +141,35 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     EXPECT_GT(counts.fragments, 1000u);
     // Lit from +x: the right half is brighter than the left.
     EXPECT_GT(frame.colour().get(44, 32).r, frame.colour().get(20, 32).r + 40);
+}
+
+TEST(ShadingTest, AModelWithoutATextureIsDrawnInItsColour) {
+    // Uniforms named member by member leave `colour` at its default, 0.8
+    // grey; a trailing {} by position zeroed it (latent while every model
+    // had a texture). Lit head-on by one white light, no ambient and no
+    // specular, seen from the light: the nearest point's light is the albedo.
+    const rl::Mesh sphere = uv_sphere(64);
+    const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
+    perspective::Camera camera;
+    camera.eye = {0, 0, 4};
+    camera.near = 1;
+    camera.far = 10;
+    Lighting<float> lighting;
+    lighting.lights.push_back({{0, 0, 1}, {1, 1, 1}});
+    lighting.ambient = {};
+    lighting.specular = {};
+    const Uniforms u{.model_matrix = rl::mat4::identity(),
+                     .normal_matrix = rl::mat3::identity(),
+                     .model_view_projection = perspective::view_projection(camera, 1.0f),
+                     .eye = camera.eye,
+                     .lighting = lighting};
+    perspective::ColourTarget frame = perspective::colour_target(65, 65);
+    draw_model(ShadingModel::phong, Surface(sphere, normals), u, frame, {}, Output::srgb);
+    const rl::Rgba centre = frame.colour().get(32, 32);
+    const double grey = 255.0 * linear_to_srgb(0.8);
+    EXPECT_NEAR(centre.r, grey, 2);
+    EXPECT_EQ(centre.g, centre.r);
+    EXPECT_EQ(centre.b, centre.r);
 }
 
 TEST(ShadingTest, InterpolatedNormalsAreRenormalised) {
@@ -155,14 +181,12 @@ TEST(ShadingTest, InterpolatedNormalsAreRenormalised) {
         l.ambient = {};
         return l;
     }();
-    Uniforms u{rl::mat4::identity(),
-               rl::mat3::identity(),
-               rl::mat4::identity(),
-               {0, 0, 5},
-               lighting,
-               nullptr,
-               {},
-               {1, 1, 1}};
+    Uniforms u{.model_matrix = rl::mat4::identity(),
+               .normal_matrix = rl::mat3::identity(),
+               .model_view_projection = rl::mat4::identity(),
+               .eye = {0, 0, 5},
+               .lighting = lighting,
+               .colour = {1, 1, 1}};
     const PhongShader shader{u, Specular::blinn_phong};
     const perspective::TriangleSetup<PhongShader::Varyings> setup{};
     const PhongShader::Varyings halfway{
