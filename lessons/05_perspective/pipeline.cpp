@@ -7,7 +7,7 @@ namespace perspective {
 PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
     objects_culled += o.objects_culled;
     faces += o.faces;
-    back_faces += o.back_faces;
+    culled += o.culled;
     outside += o.outside;
     clipped += o.clipped;
     drawn += o.drawn;

@@ -97,14 +97,14 @@ struct OverdrawError : std::runtime_error {
 struct PipelineCounts {
     std::size_t objects_culled = 0;  // models skipped whole by their bounding box
     std::size_t faces = 0;           // faces that reached the vertex stage
-    std::size_t back_faces =
-        0;                    // culled by their winding (facing away, or with Cull::front towards)
+    std::size_t culled = 0;   // by their winding: facing away (Cull::back) or towards (Cull::front)
     std::size_t outside = 0;  // nothing left after clipping
     std::size_t clipped = 0;  // cut by at least one plane
     std::size_t drawn = 0;    // triangles rasterized (a clipped face may give several)
     std::size_t refused = 0;  // refused by the rasterizer (beyond 2^22 pixels, NaN)
     std::size_t visited = 0;  // samples of the triangles' boxes the rasterizer tested
-    std::size_t fragments = 0;  // samples that passed the depth test and were stored
+    std::size_t fragments = 0;  // stored: passed the depth test, not discarded (one per
+                                // pixel; per sample under a policy of several)
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
 
@@ -419,7 +419,7 @@ void assemble_face(const std::array<ClipVertex<V, F>, 3>& v, int face, const Cli
     if (options.cull != Cull::none) {
         const double area = facing(v[0].position, v[1].position, v[2].position);
         if (options.cull == Cull::back ? area <= 0 : area >= 0) {
-            ++counts.back_faces;
+            ++counts.culled;
             return;
         }
     }

@@ -311,7 +311,7 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                                        pc, keep);
         }
     }
-    counts.back_faces = pc.back_faces;
+    counts.culled = pc.culled;
     counts.clipped = pc.clipped;
     counts.outside = pc.outside;
     counts.triangles = s.triangles.size();
@@ -348,7 +348,8 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     // [/doc:binning]
     times_.binning = milliseconds_since(start);
 
-    // 4. The tiles, in parallel: each one rasterized, shaded and resolved by one thread.
+    // 4. The tiles, in parallel: each one rasterized, shaded and copied into the frame by one
+    // thread.
     start = Clock::now();
     const auto draw_tile = [&](std::size_t i, TileBuffers& buffers) {
         const int tx = static_cast<int>(i) % s.tiles_x, ty = static_cast<int>(i) / s.tiles_x;

@@ -55,7 +55,8 @@ struct StageTimes {
 struct FrameCounts {
     std::size_t vertices = 0;  // vertex-stage runs (distinct vertices of the models drawn)
     std::size_t faces = 0;     // faces of the models drawn
-    std::size_t back_faces = 0, clipped = 0, outside = 0, refused = 0;
+    std::size_t culled = 0;    // by their winding (lesson 05's PipelineCounts)
+    std::size_t clipped = 0, outside = 0, refused = 0;
     std::size_t triangles = 0;  // set up and binned
     std::size_t objects_culled = 0;
     TileCounts tiles;  // summed over the tiles

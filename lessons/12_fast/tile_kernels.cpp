@@ -795,7 +795,7 @@ void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, Ti
     }
     counts.raster_ns += ns(rasterized - start);
     counts.shade_ns += ns(shaded - rasterized);
-    counts.resolve_ns += ns(Clock::now() - shaded);
+    counts.copy_ns += ns(Clock::now() - shaded);
 }
 
 void EncodeSrgb(const float* values, std::uint8_t* bytes, std::size_t count) {
@@ -832,7 +832,7 @@ TileCounts& TileCounts::operator+=(const TileCounts& o) {
     blocks_rejected += o.blocks_rejected, blocks_full += o.blocks_full;
     blocks_partial += o.blocks_partial, blocks_occluded += o.blocks_occluded;
     depth_passed += o.depth_passed, shaded += o.shaded;
-    raster_ns += o.raster_ns, shade_ns += o.shade_ns, resolve_ns += o.resolve_ns;
+    raster_ns += o.raster_ns, shade_ns += o.shade_ns, copy_ns += o.copy_ns;
     lanes += o.lanes;
     return *this;
 }

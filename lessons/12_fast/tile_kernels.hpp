@@ -59,8 +59,9 @@ struct TileCounts {
     std::uint64_t depth_passed = 0;     // samples that passed the depth test (overdraw included)
     std::uint64_t shaded = 0;           // pixels shaded (each visible pixel once)
     // Where the tile's time went (nanoseconds): clearing and the visibility
-    // pass (with the shading too without shade_once), shading, resolving.
-    std::uint64_t raster_ns = 0, shade_ns = 0, resolve_ns = 0;
+    // pass (with the shading too without shade_once), shading, copying into
+    // the frame.
+    std::uint64_t raster_ns = 0, shade_ns = 0, copy_ns = 0;
     std::uint64_t lanes = 0;  // SIMD lanes the shader ran on (shaded / lanes: the lanes' use)
 };
 

@@ -9,7 +9,7 @@ void take_frame(Result& r, perspective::ColourTarget& frame,
         r.depth = std::move(*depth);
     r.count("objects_culled", counts.objects_culled);
     r.count("faces", counts.faces);
-    r.count("back_faces", counts.back_faces);
+    r.count("culled", counts.culled);
     r.count("clipped", counts.clipped);
     r.count("outside", counts.outside);
     r.count("drawn", counts.drawn);

@@ -401,7 +401,7 @@ int main(int argc, char** argv) {
                 fast::Renderer renderer(s.models, size, size, {});
                 renderer.render(s.camera);
                 fast::StageTimes sum;
-                double raster = 0, shade = 0, resolve = 0;
+                double raster = 0, shade = 0, copy = 0;
                 for (int f = 0; f < kOrbitFrames; ++f) {
                     const fast::FrameCounts counts =
                         renderer.render(fast::orbit(s.camera, f, kOrbitFrames));
@@ -410,7 +410,7 @@ int main(int argc, char** argv) {
                     sum.tiles += t.tiles;
                     raster += static_cast<double>(counts.tiles.raster_ns) / 1e6 / kThreads;
                     shade += static_cast<double>(counts.tiles.shade_ns) / 1e6 / kThreads;
-                    resolve += static_cast<double>(counts.tiles.resolve_ns) / 1e6 / kThreads;
+                    copy += static_cast<double>(counts.tiles.copy_ns) / 1e6 / kThreads;
                 }
                 const auto row = [&](const char* stage, double total) {
                     stages_table.add_row(
@@ -421,7 +421,7 @@ int main(int argc, char** argv) {
                 row("binning", sum.binning);
                 row("tiles: clear and visibility pass (per thread)", raster);
                 row("tiles: shading (per thread)", shade);
-                row("tiles: resolve into the frame (per thread)", resolve);
+                row("tiles: copy into the frame (per thread)", copy);
                 row("tiles, in all (clock)", sum.tiles);
             }
         steps_table.write_csv(options.out_dir / "12_steps.csv");

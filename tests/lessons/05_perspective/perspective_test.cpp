@@ -313,7 +313,7 @@ TEST(PerspectiveTest, FaceWithAVertexBehindTheEyeIsDrawnNotCulled) {
     const std::vector<WorldTriangle> scene = {{{{-1, -0.5, -2}, {1, -0.5, -2}, {0, 0.5, 1}}, {}}};
     PipelineCounts counts;
     EXPECT_LT(wrong_share(scene, camera, ClipMode::guard_band, &counts), 0.002);
-    EXPECT_EQ(counts.back_faces, 0u);
+    EXPECT_EQ(counts.culled, 0u);
     EXPECT_GT(counts.fragments, 1000u);
 }
 
@@ -393,7 +393,7 @@ TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
     const std::vector<TexturedModel> globe(models.end() - 1, models.end());
     perspective::ColourTarget inside = perspective::colour_target(64, 64);
     const PipelineCounts g = render(globe, camera, {}, inside);
-    EXPECT_EQ(g.back_faces, g.faces);
+    EXPECT_EQ(g.culled, g.faces);
     EXPECT_GT(g.faces, 0u);
     EXPECT_EQ(g.fragments, 0u);
     for (const rl::Rgba& p : inside.colour().pixels()) EXPECT_EQ(p, rl::kBackground);
