@@ -7,9 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <new>
+#include <string_view>
 
 namespace rl {
 namespace {
@@ -131,6 +133,68 @@ Image load_png_jpeg_or_bmp(const std::filesystem::path& path) {
     return from_top_first_rgba(data.get(), width, height);
 }
 
+bool is_radiance_hdr(std::span<const std::uint8_t> bytes) {
+    const auto starts_with = [&](std::string_view signature) {
+        return bytes.size() >= signature.size() &&
+               std::equal(signature.begin(), signature.end(), bytes.begin());
+    };
+    return starts_with("#?RADIANCE\n") || starts_with("#?RGBE\n");
+}
+
+// Where an .hdr's pixels begin: after the header's lines, the empty line
+// that ends them and the resolution line ("-Y 512 +X 1024"); npos if absent.
+std::size_t hdr_pixels_start(std::span<const std::uint8_t> bytes) {
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    const std::size_t blank = text.find("\n\n");
+    if (blank == std::string_view::npos) return blank;
+    const std::size_t end = text.find('\n', blank + 2);
+    return end == std::string_view::npos ? end : end + 1;
+}
+
+// Why the pixels from `at` on cannot be read as a width x height image, or
+// "" if they can: read as stb_image reads them. A row of 8 to 32767 pixels
+// may be run-length encoded (2, 2, the width in two bytes, then each channel
+// in runs: a count over 128 repeats the next byte count - 128 times, any
+// other count copies that many bytes); from the first row that is not, the
+// rest is flat, 4 bytes a pixel. Checked here, before stb_image sees the
+// file, because stb_image reads zeros past the end of a file (a truncated
+// one would load with black rows) and loops forever on a run of count 0.
+std::string hdr_pixels_problem(std::span<const std::uint8_t> bytes, std::size_t at, int width,
+                               int height) {
+    const std::string truncated = "truncated pixel data: the file ends before the last of the " +
+                                  std::to_string(width) + "x" + std::to_string(height) +
+                                  " .hdr's pixels";
+    const auto w = static_cast<std::uint64_t>(width);
+    const auto flat_rest = [&](int rows) {
+        return bytes.size() - at >= 4 * w * static_cast<std::uint64_t>(rows) ? "" : truncated;
+    };
+    if (width < 8 || width > 32767) return flat_rest(height);
+    for (int row = 0; row < height; ++row) {
+        if (bytes.size() - at < 4) return truncated;
+        if (bytes[at] != 2 || bytes[at + 1] != 2 || (bytes[at + 2] & 0x80))
+            return flat_rest(height - row);
+        if ((bytes[at + 2] << 8 | bytes[at + 3]) != width)
+            return "corrupt run-length data: row " + std::to_string(row) + " is not " +
+                   std::to_string(width) + " pixels long";
+        at += 4;
+        for (int channel = 0; channel < 4; ++channel)
+            for (std::uint64_t filled = 0; filled < w;) {
+                if (at >= bytes.size()) return truncated;
+                const unsigned count = bytes[at++];
+                const unsigned length = count > 128 ? count - 128 : count;
+                if (length == 0 || filled + length > w)
+                    return "corrupt run-length data: a run of " + std::to_string(length) +
+                           " in row " + std::to_string(row) + " (1 to " +
+                           std::to_string(w - filled) + " fit)";
+                const std::size_t data = count > 128 ? 1 : length;
+                if (bytes.size() - at < data) return truncated;
+                at += data;
+                filled += length;
+            }
+    }
+    return "";
+}
+
 void append_bytes(void* context, void* data, int size) {
     auto* out = static_cast<std::vector<std::uint8_t>*>(context);
     const auto* bytes = static_cast<const std::uint8_t*>(data);
@@ -162,6 +226,67 @@ Image load_image(const std::filesystem::path& path) {
     } catch (const std::bad_alloc&) {
         throw FileError(path, "out of memory decoding the image");
     }
+}
+
+HdrImage load_hdr_image(const std::filesystem::path& path) {
+    try {
+        const std::vector<std::uint8_t> bytes = read_file(path);
+        if (bytes.size() > static_cast<std::size_t>(INT_MAX))
+            throw FileError(path, "file too large");
+        if (!is_radiance_hdr(bytes))
+            throw FileError(path, "not a Radiance .hdr file (it must start with #?RADIANCE)");
+        int width = 0, height = 0, channels = 0;
+        if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                                   &channels))
+            throw FileError(path, std::string("not a readable image: ") + stbi_failure_reason());
+        try {
+            check_dimensions(width, height);
+        } catch (const std::invalid_argument& e) {
+            throw FileError(path, e.what());
+        }
+        const std::size_t start = hdr_pixels_start(bytes);
+        if (start == std::string::npos)
+            throw FileError(path, "no resolution line after the header");
+        if (const std::string problem = hdr_pixels_problem(bytes, start, width, height);
+            !problem.empty())
+            throw FileError(path, problem);
+        std::unique_ptr<float, void (*)(void*)> data(
+            stbi_loadf_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
+                                   &channels, 3),
+            stbi_image_free);
+        if (!data) throw FileError(path, std::string("cannot decode: ") + stbi_failure_reason());
+        HdrImage image(width, height);
+        for (int y = 0; y < height; ++y) {
+            const float* row = data.get() + static_cast<std::size_t>(height - 1 - y) * width * 3;
+            for (int x = 0; x < width; ++x) {
+                const float* p = row + static_cast<std::size_t>(x) * 3;
+                image.set(x, y, vec4{p[0], p[1], p[2], 1.0f});
+            }
+        }
+        return image;
+    } catch (const std::bad_alloc&) {
+        throw FileError(path, "out of memory decoding the image");
+    }
+}
+
+std::vector<std::uint8_t> encode_hdr(const std::filesystem::path& path, const HdrImage& image) {
+    std::vector<float> rgb;
+    rgb.reserve(static_cast<std::size_t>(image.width()) * image.height() * 3);
+    for (int y = image.height() - 1; y >= 0; --y)
+        for (int x = 0; x < image.width(); ++x) {
+            const vec4 v = image.get(x, y);
+            for (float c : {v.x, v.y, v.z}) {
+                if (!(c >= 0) || !std::isfinite(c))
+                    throw FileError(path, "an .hdr holds finite values of 0 or more, not " +
+                                              std::to_string(c) + " (pixel " + std::to_string(x) +
+                                              ", " + std::to_string(y) + ")");
+                rgb.push_back(c);
+            }
+        }
+    std::vector<std::uint8_t> hdr;
+    if (!stbi_write_hdr_to_func(append_bytes, &hdr, image.width(), image.height(), 3, rgb.data()))
+        throw FileError(path, "HDR encoding failed");
+    return hdr;
 }
 
 void write_png(const std::filesystem::path& path, const Image& image) {

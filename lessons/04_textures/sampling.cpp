@@ -1,7 +1,9 @@
 #include "sampling.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
 namespace textures {
 
@@ -21,16 +23,19 @@ rl::Rgba to_rgba(rl::vec4 c) {
 }
 
 // [doc:downsample]
-template <class Value, class Byte>
-rl::Image average_down(const rl::Image& image, Value&& value, Byte&& byte) {
+// decode(texel) gives its four values; encode(sums / total) the texel that
+// stores their averages.
+template <class Texel, class Decode, class Encode>
+rl::Grid<Texel> average_down(const rl::Grid<Texel>& image, Decode&& decode, Encode&& encode) {
     const int w = std::max(1, image.width() / 2), h = std::max(1, image.height() / 2);
     const double sx = double(image.width()) / w,
                  sy = double(image.height()) / h;  // 2, or a bit more if odd
-    rl::Image out(w, h);
+    rl::Grid<Texel> out(w, h);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             // The output texel covers [x*sx, (x+1)*sx) x [y*sy, (y+1)*sy) of the input.
-            double sum[4] = {0, 0, 0, 0}, total = 0;
+            std::array<double, 4> sum = {0, 0, 0, 0};
+            double total = 0;
             for (int j = static_cast<int>(y * sy);
                  j < std::min(image.height(), static_cast<int>(std::ceil((y + 1) * sy))); ++j)
                 for (int i = static_cast<int>(x * sx);
@@ -40,47 +45,77 @@ rl::Image average_down(const rl::Image& image, Value&& value, Byte&& byte) {
                     const double wy =
                         std::min<double>(j + 1, (y + 1) * sy) - std::max<double>(j, y * sy);
                     const double weight = wx * wy;
-                    const rl::Rgba c = image.get(i, j);
-                    sum[0] += weight * value(c.r), sum[1] += weight * value(c.g),
-                        sum[2] += weight * value(c.b), sum[3] += weight * c.a;
+                    const std::array<double, 4> v = decode(image.get(i, j));
+                    for (std::size_t k = 0; k < 4; ++k) sum[k] += weight * v[k];
                     total += weight;
                 }
-            const auto alpha = static_cast<std::uint8_t>(std::lround(sum[3] / total));
-            out.set(x, y,
-                    {byte(sum[0] / total), byte(sum[1] / total), byte(sum[2] / total), alpha});
+            for (double& s : sum) s /= total;
+            out.set(x, y, encode(sum));
         }
     return out;
 }
 
+template <>
 rl::Image downsample(const rl::Image& image, const TexelEncoding* encoding) {
-    if (encoding)  // average the values the bytes stand for, then encode again
-        return average_down(
-            image, [&](std::uint8_t c) { return double(encoding->value[c]); },
-            [&](double v) { return encoding->to_byte(static_cast<float>(v)); });
+    // Alpha is averaged as bytes; the colour as the values the bytes stand
+    // for (through the encoding, then encoded again), or as bytes without one.
+    const auto value = [&](std::uint8_t c) {
+        return encoding ? double(encoding->value[c]) : double(c);
+    };
+    const auto byte = [&](double v) {
+        return encoding ? encoding->to_byte(static_cast<float>(v))
+                        : static_cast<std::uint8_t>(std::lround(v));
+    };
     return average_down(
-        image, [](std::uint8_t c) { return double(c); },
-        [](double v) { return static_cast<std::uint8_t>(std::lround(v)); });
+        image,
+        [&](rl::Rgba c) {
+            return std::array<double, 4>{value(c.r), value(c.g), value(c.b), double(c.a)};
+        },
+        [&](const std::array<double, 4>& m) {
+            return rl::Rgba{byte(m[0]), byte(m[1]), byte(m[2]),
+                            static_cast<std::uint8_t>(std::lround(m[3]))};
+        });
+}
+
+template <>
+rl::Grid<rl::vec4> downsample(const rl::Grid<rl::vec4>& image, const TexelEncoding* encoding) {
+    if (encoding) throw std::invalid_argument("float texels are values already: no encoding");
+    return average_down(
+        image,
+        [](const rl::vec4& c) {
+            return std::array<double, 4>{c.x, c.y, c.z, c.w};
+        },
+        [](const std::array<double, 4>& m) {
+            return rl::vec4{static_cast<float>(m[0]), static_cast<float>(m[1]),
+                            static_cast<float>(m[2]), static_cast<float>(m[3])};
+        });
 }
 // [/doc:downsample]
 
-MipChain::MipChain(rl::Image image, const TexelEncoding* encoding)
-    : base_(std::make_shared<const rl::Image>(std::move(image))),
+template <TexelType Texel>
+BasicMipChain<Texel>::BasicMipChain(Level image, const TexelEncoding* encoding)
+    : base_(std::make_shared<const Level>(std::move(image))),
       encoding_(encoding),
-      smaller_(std::make_shared<Smaller>()) {}
+      smaller_(std::make_shared<Smaller>()) {
+    if (std::same_as<Texel, rl::vec4> && encoding)
+        throw std::invalid_argument("float texels are values already: no encoding");
+}
 
-const std::vector<rl::Image>& MipChain::smaller() const {
+template <TexelType Texel>
+const std::vector<typename BasicMipChain<Texel>::Level>& BasicMipChain<Texel>::smaller() const {
     std::call_once(smaller_->built, [this] {
-        std::vector<rl::Image>& levels = smaller_->levels;
-        const auto last = [&]() -> const rl::Image& {
-            return levels.empty() ? *base_ : levels.back();
-        };
+        std::vector<Level>& levels = smaller_->levels;
+        const auto last = [&]() -> const Level& { return levels.empty() ? *base_ : levels.back(); };
         while (last().width() > 1 || last().height() > 1) {
-            rl::Image next = downsample(last(), encoding_);  // before push_back moves the levels
+            Level next = downsample(last(), encoding_);  // before push_back moves the levels
             levels.push_back(std::move(next));
         }
     });
     return smaller_->levels;
 }
+
+template class BasicMipChain<rl::Rgba>;
+template class BasicMipChain<rl::vec4>;
 
 // [doc:wrap]
 int wrap_texel(int i, int size, Wrap wrap) {
@@ -110,16 +145,22 @@ inline int wrapped(int i, int size, Wrap wrap) {
 }
 
 // The texel at wrapped indices (x, y); -1 in either: the border colour.
-[[gnu::always_inline]] inline rl::vec4 fetch(const rl::Image& level, int x, int y,
+template <TexelType Texel>
+[[gnu::always_inline]] inline rl::vec4 fetch(const rl::Grid<Texel>& level, int x, int y,
                                              const SamplerState& state) {
     if (x < 0 || y < 0) return state.border;
-    const rl::Rgba c = level.get(x, y);
-    if (!state.encoding) return to_vec4(c);
-    const std::array<float, 256>& value = state.encoding->value;
-    return {value[c.r], value[c.g], value[c.b], float(c.a) / 255.0f};
+    if constexpr (std::same_as<Texel, rl::vec4>) {
+        return level.get(x, y);  // values already
+    } else {
+        const rl::Rgba c = level.get(x, y);
+        if (!state.encoding) return to_vec4(c);
+        const std::array<float, 256>& value = state.encoding->value;
+        return {value[c.r], value[c.g], value[c.b], float(c.a) / 255.0f};
+    }
 }
 
-rl::vec4 texel(const rl::Image& level, int i, int j, const SamplerState& state) {
+template <TexelType Texel>
+rl::vec4 texel(const rl::Grid<Texel>& level, int i, int j, const SamplerState& state) {
     return fetch(level, wrapped(i, level.width(), state.wrap),
                  wrapped(j, level.height(), state.wrap), state);
 }
@@ -143,7 +184,8 @@ double to_texels(float u, int size, Wrap wrap) {
 }  // namespace
 
 // [doc:sample-level]
-rl::vec4 sample_level(const rl::Image& level, rl::vec2 uv, bool bilinear,
+template <TexelType Texel>
+rl::vec4 sample_level(const rl::Grid<Texel>& level, rl::vec2 uv, bool bilinear,
                       const SamplerState& state) {
     const double s = to_texels(uv.x, level.width(), state.wrap),
                  t = to_texels(uv.y, level.height(), state.wrap);
@@ -173,7 +215,8 @@ float level_of_detail(const UvDerivatives& d, int width, int height) {
 }
 // [/doc:lod]
 
-rl::vec4 sample(const MipChain& texture, rl::vec2 uv, const UvDerivatives& derivatives,
+template <TexelType Texel>
+rl::vec4 sample(const BasicMipChain<Texel>& texture, rl::vec2 uv, const UvDerivatives& derivatives,
                 const SamplerState& state) {
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) return state.border;
     switch (state.filter) {
@@ -185,7 +228,7 @@ rl::vec4 sample(const MipChain& texture, rl::vec2 uv, const UvDerivatives& deriv
             break;
     }
     // [doc:trilinear]
-    const rl::Image& base = texture.level(0);
+    const rl::Grid<Texel>& base = texture.level(0);
     float lod = level_of_detail(derivatives, base.width(), base.height());
     if (!std::isfinite(lod)) lod = 0;
     lod = std::clamp(lod, 0.0f, static_cast<float>(texture.levels() - 1));
@@ -197,5 +240,10 @@ rl::vec4 sample(const MipChain& texture, rl::vec2 uv, const UvDerivatives& deriv
     return a * (1 - blend) + sample_level(texture.level(upper), uv, true, state) * blend;
     // [/doc:trilinear]
 }
+
+template rl::vec4 sample(const MipChain&, rl::vec2, const UvDerivatives&, const SamplerState&);
+template rl::vec4 sample(const HdrMipChain&, rl::vec2, const UvDerivatives&, const SamplerState&);
+template rl::vec4 sample_level(const rl::Image&, rl::vec2, bool, const SamplerState&);
+template rl::vec4 sample_level(const rl::Grid<rl::vec4>&, rl::vec2, bool, const SamplerState&);
 
 }  // namespace textures

@@ -6,11 +6,14 @@
 //
 //   const textures::MipChain chain(image);
 //   const rl::vec4 c = textures::sample(chain, uv, {du_dx, du_dy}, {textures::Filter::trilinear});
+//   const textures::HdrMipChain sky(rl::load_hdr_image("sky.hdr"));   // float texels
+//   const rl::vec4 radiance = textures::sample(sky, uv, {du_dx, du_dy}, {});
 #pragma once
 
 #include "rasterlab/named_enum.hpp"
 
 #include <array>
+#include <concepts>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -53,34 +56,48 @@ struct TexelEncoding {
     std::uint8_t (*to_byte)(float value);  // value in [0, 1] -> nearest byte
 };
 
-class MipChain {
+// A texture's texels are 8-bit (rl::Rgba: colour maps, normal maps, their
+// bytes standing for values through an encoding) or float (rl::vec4: linear
+// high-dynamic-range values, such as the environment maps of lesson 09,
+// which a byte cannot hold). Everything below works on either.
+template <class T>
+concept TexelType = std::same_as<T, rl::Rgba> || std::same_as<T, rl::vec4>;
+
+template <TexelType Texel>
+class BasicMipChain {
   public:
+    using Level = rl::Grid<Texel>;
     // Each level averages the one before in the values of `encoding`
-    // (nullptr: the bytes themselves). The smaller levels are built the
-    // first time anything asks for them (once, safely from several threads),
-    // so a texture only ever sampled by `nearest` or `bilinear` costs no
-    // averaging; copies share them. (The image is taken by value: a caller
-    // done with its image moves it in rather than holding two copies.)
-    explicit MipChain(rl::Image image, const TexelEncoding* encoding = nullptr);
+    // (nullptr: the bytes themselves; float texels have no encoding and
+    // refuse one). The smaller levels are built the first time anything
+    // asks for them (once, safely from several threads), so a texture only
+    // ever sampled by `nearest` or `bilinear` costs no averaging; copies
+    // share them. (The image is taken by value: a caller done with its image
+    // moves it in rather than holding two copies.)
+    explicit BasicMipChain(Level image, const TexelEncoding* encoding = nullptr);
     int levels() const { return 1 + static_cast<int>(smaller().size()); }
-    const rl::Image& level(int i) const {
+    const Level& level(int i) const {
         return i == 0 ? *base_ : smaller()[static_cast<std::size_t>(i - 1)];
     }
 
   private:
     struct Smaller {
         std::once_flag built;
-        std::vector<rl::Image> levels;
+        std::vector<Level> levels;
     };
-    const std::vector<rl::Image>& smaller() const;
-    std::shared_ptr<const rl::Image> base_;
+    const std::vector<Level>& smaller() const;
+    std::shared_ptr<const Level> base_;
     const TexelEncoding* encoding_;
     std::shared_ptr<Smaller> smaller_;
 };
 
+using MipChain = BasicMipChain<rl::Rgba>;     // 8-bit texels: lessons 04-08 and 12
+using HdrMipChain = BasicMipChain<rl::vec4>;  // float texels, linear
+
 // One level down: each output texel averages the input texels under it,
 // weighted by how much of each it covers.
-rl::Image downsample(const rl::Image& image, const TexelEncoding* encoding = nullptr);
+template <TexelType Texel>
+rl::Grid<Texel> downsample(const rl::Grid<Texel>& image, const TexelEncoding* encoding = nullptr);
 
 struct SamplerState {
     Filter filter = Filter::bilinear;
@@ -103,13 +120,16 @@ float level_of_detail(const UvDerivatives& d, int width, int height);
 // outside). Exposed for the tests.
 int wrap_texel(int i, int size, Wrap wrap);
 
-// The filtered colour at uv (components 0..1). NaN or infinite coordinates
-// give the border colour: a defined result, never a crash.
-rl::vec4 sample(const MipChain& texture, rl::vec2 uv, const UvDerivatives& derivatives,
+// The filtered value at uv (components 0..1 for 8-bit texels, any finite
+// value for float ones). NaN or infinite coordinates give the border
+// colour: a defined result, never a crash.
+template <TexelType Texel>
+rl::vec4 sample(const BasicMipChain<Texel>& texture, rl::vec2 uv, const UvDerivatives& derivatives,
                 const SamplerState& state);
 
 // Sampling one level: nearest or bilinear.
-rl::vec4 sample_level(const rl::Image& level, rl::vec2 uv, bool bilinear,
+template <TexelType Texel>
+rl::vec4 sample_level(const rl::Grid<Texel>& level, rl::vec2 uv, bool bilinear,
                       const SamplerState& state);
 
 rl::vec4 to_vec4(rl::Rgba c);

@@ -1,7 +1,8 @@
 // libFuzzer target: loading a texture file as the lessons do, by extension:
 // .tga through our codec, JPEG through libjpeg-turbo, PNG/BMP through
-// stb_image. The first input byte picks the extension; the rest is the
-// file. It is refused with a FileError or loaded into a non-empty image.
+// stb_image, and float images (Radiance .hdr) through stb_image. The first
+// input byte picks the extension (0xf0 and up: .hdr); the rest is the file.
+// It is refused with a FileError or loaded into a non-empty image.
 // Run: build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture
 #include <unistd.h>
 
@@ -22,14 +23,21 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         std::filesystem::create_directories(dir);
         return dir;
     }();
-    const std::filesystem::path path = folder / (std::string("texture") + extensions[data[0] % 4]);
+    const bool hdr = data[0] >= 0xf0;
+    const std::filesystem::path path =
+        folder / (std::string("texture") + (hdr ? ".hdr" : extensions[data[0] % 4]));
     {
         std::ofstream out(path, std::ios::binary | std::ios::trunc);
         out.write(reinterpret_cast<const char*>(data + 1), static_cast<std::streamsize>(size - 1));
     }
     try {
-        const rl::Image image = rl::load_image(path);
-        if (image.width() <= 0 || image.height() <= 0) std::abort();
+        if (hdr) {
+            const rl::HdrImage image = rl::load_hdr_image(path);
+            if (image.width() <= 0 || image.height() <= 0) std::abort();
+        } else {
+            const rl::Image image = rl::load_image(path);
+            if (image.width() <= 0 || image.height() <= 0) std::abort();
+        }
     } catch (const rl::FileError&) {
     }
     std::filesystem::remove(path);

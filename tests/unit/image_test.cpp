@@ -1,13 +1,17 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "rasterlab/image.hpp"
 #include "rasterlab/image_io.hpp"
 #include "temp_dir.hpp"
 
 namespace {
 
+using rl::HdrImage;
 using rl::Image;
 using rl::Rgba;
+using rl::vec4;
 
 TEST(Image, StartsFilledAndIsBottomRowFirst) {
     Image image(3, 2, Rgba{1, 2, 3, 4});
@@ -112,6 +116,64 @@ TEST(ImageIo, HeadersClaimingMoreThanTheFileHoldsAreRefusedBeforeDecoding) {
     one_pixel[2] = 58;
     rl_test::write_bytes(dir.path() / "one.bmp", one_pixel);
     EXPECT_EQ(rl::load_image(dir.path() / "one.bmp").get(0, 0), (rl::Rgba{255, 0, 0, 255}));
+}
+
+// Radiance .hdr: values a byte cannot hold (the sun at 5000, a shadow at
+// 0.002) come back within RGBE's precision (8 bits of mantissa shared by the
+// three channels: 1/256 of the largest), bottom row first as every image.
+TEST(ImageIo, HdrRoundTripKeepsValuesAndOrientation) {
+    rl_test::TempDir dir;
+    HdrImage image(9, 3, vec4{0.5f, 0.25f, 0.125f, 1});  // 9 wide: run-length encoded rows
+    image.set(0, 0, vec4{5000, 2500, 1, 1});             // bottom-left
+    image.set(8, 2, vec4{0.002f, 0.001f, 0.0005f, 1});   // top-right
+    rl_test::write_bytes(dir.path() / "sky.hdr", rl::encode_hdr(dir.path() / "sky.hdr", image));
+    const HdrImage back = rl::load_hdr_image(dir.path() / "sky.hdr");
+    ASSERT_EQ(back.width(), 9);
+    ASSERT_EQ(back.height(), 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 9; ++x) {
+            const vec4 a = image.get(x, y), b = back.get(x, y);
+            const float largest = std::max({a.x, a.y, a.z});
+            for (int c = 0; c < 3; ++c) EXPECT_NEAR(b[c], a[c], largest / 128) << x << "," << y;
+            EXPECT_EQ(b.w, 1.0f);
+        }
+    EXPECT_THROW(rl::encode_hdr("neg.hdr", HdrImage(1, 1, vec4{-1, 0, 0, 1})), rl::FileError);
+}
+
+TEST(ImageIo, BrokenHdrFilesAreRefusedNamingTheCause) {
+    rl_test::TempDir dir;
+    const auto refusal = [&](const std::string& name, const std::string& text) {
+        rl_test::write_text(dir.path() / name, text);
+        try {
+            rl::load_hdr_image(dir.path() / name);
+        } catch (const rl::FileError& e) {
+            return std::string(e.what());
+        }
+        return std::string("loaded");
+    };
+    EXPECT_NE(refusal("png.hdr", "\x89PNG").find("not a Radiance .hdr file"), std::string::npos);
+    // A header claiming 16384 x 16384 and no pixels: refused before decoding.
+    const std::string huge =
+        refusal("huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 16384 +X 16384\n");
+    EXPECT_NE(huge.find("truncated pixel data"), std::string::npos) << huge;
+    EXPECT_NE(huge.find("16384x16384"), std::string::npos) << huge;
+    const std::string short_rows =
+        refusal("short.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\nabcd");
+    EXPECT_NE(short_rows.find("truncated pixel data"), std::string::npos) << short_rows;
+    // A run of length 0, on which stb_image loops forever (found by fuzz_texture).
+    const std::string zero_run =
+        refusal("zero.hdr", std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 8\n") +
+                                std::string("\x02\x02\x00\x08\x00", 5));
+    EXPECT_NE(zero_run.find("corrupt run-length data: a run of 0"), std::string::npos) << zero_run;
+    // A run-length encoded file cut one byte short of its last row.
+    HdrImage sky(16, 4, vec4{0.5f, 0.75f, 1.5f, 1});
+    sky.set(3, 3, vec4{20, 1, 0, 1});
+    std::vector<std::uint8_t> cut = rl::encode_hdr("cut.hdr", sky);
+    rl_test::write_bytes(dir.path() / "whole.hdr", cut);
+    EXPECT_EQ(rl::load_hdr_image(dir.path() / "whole.hdr").get(3, 3).x, 20.0f);
+    cut.pop_back();
+    rl_test::write_bytes(dir.path() / "cut.hdr", cut);
+    EXPECT_THROW(rl::load_hdr_image(dir.path() / "cut.hdr"), rl::FileError);
 }
 
 }  // namespace

@@ -1,18 +1,30 @@
 // Reading and writing images by file extension: .tga through our own codec,
 // JPEG through libjpeg-turbo, PNG and BMP through stb_image, PNG out through
-// stb_image_write.
+// stb_image_write; and float images (Radiance .hdr) through both.
 #pragma once
 
 #include <filesystem>
 
 #include "rasterlab/image.hpp"
 #include "rasterlab/tga.hpp"
+#include "rasterlab/vec.hpp"
 
 namespace rl {
 
 // Reads .tga with read_tga(), and PNG, JPEG or BMP by their signatures.
 // Throws FileError (TgaError for TGA files) naming the file and the problem.
 Image load_image(const std::filesystem::path& path);
+
+// A float image: linear RGB values of any size (light, not bytes), alpha 1.
+using HdrImage = Grid<vec4>;
+
+// Reads a Radiance .hdr file (RGBE, flat or run-length encoded), by its
+// signature. Throws FileError naming the file and the problem.
+HdrImage load_hdr_image(const std::filesystem::path& path);
+
+// The bytes of a Radiance .hdr file of the image (top row first in the
+// file, as the format requires). Values below 0 or not finite are refused.
+std::vector<std::uint8_t> encode_hdr(const std::filesystem::path& path, const HdrImage& image);
 
 // Writes a PNG (top row first in the file, as PNG requires), atomically.
 void write_png(const std::filesystem::path& path, const Image& image);

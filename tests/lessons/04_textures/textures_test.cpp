@@ -25,6 +25,17 @@ rl::Image coordinates_texture(int w, int h) {
     return image;
 }
 
+// Any encoding: float texels refuse one.
+const TexelEncoding& shading_like_encoding() {
+    static const TexelEncoding identity = [] {
+        TexelEncoding e{};
+        for (int i = 0; i < 256; ++i) e.value[static_cast<std::size_t>(i)] = i / 255.0f;
+        e.to_byte = [](float v) { return static_cast<std::uint8_t>(v * 255); };
+        return e;
+    }();
+    return identity;
+}
+
 std::pair<int, int> texel_hit(const MipChain& chain, rl::vec2 uv, Wrap wrap) {
     SamplerState state;
     state.filter = Filter::nearest;
@@ -105,6 +116,29 @@ TEST(MipChain, OddAndNonPowerOfTwoSizesGoDownToOneTexel) {
     const rl::Rgba last = chain.level(5).get(0, 0);
     EXPECT_NEAR(last.r, 18, 1);  // mean of 0..36
     EXPECT_NEAR(last.g, 11, 1);  // mean of 0..22
+}
+
+// Float texels keep what bytes cannot: a texel of 1000 beside one of 0.001
+// filters and averages to their true means (lesson 09's skies), where bytes
+// would clip the first to 1 and round the second to 0.
+TEST(MipChain, FloatTexelsFilterAndAverageTheirValues) {
+    rl::Grid<rl::vec4> sky(2, 1, rl::vec4{0.001f, 0.001f, 0.001f, 1});
+    sky.set(0, 0, rl::vec4{1000, 500, 250, 1});
+    const HdrMipChain chain(sky);
+    ASSERT_EQ(chain.levels(), 2);
+    EXPECT_FLOAT_EQ(chain.level(1).get(0, 0).x, 500.0005f);  // the area average
+    SamplerState bilinear;
+    bilinear.wrap = Wrap::clamp;
+    // Halfway between the two texel centres: the mean of the two.
+    const rl::vec4 middle = sample(chain, {0.5f, 0.5f}, {}, bilinear);
+    EXPECT_FLOAT_EQ(middle.x, 500.0005f);
+    EXPECT_FLOAT_EQ(middle.y, 250.0005f);
+    // Trilinear far away: the top level, the whole texture's mean.
+    bilinear.filter = Filter::trilinear;
+    EXPECT_FLOAT_EQ(sample(chain, {0.25f, 0.5f}, {{8, 0}, {0, 8}}, bilinear).z, 125.0005f);
+    bilinear.filter = Filter::nearest;  // and nearest gives the texel itself
+    EXPECT_FLOAT_EQ(sample(chain, {0.75f, 0.5f}, {}, bilinear).x, 0.001f);
+    EXPECT_THROW(HdrMipChain(sky, &shading_like_encoding()), std::invalid_argument);
 }
 
 // The limitation lesson 06 removes: the chain averages the texture's bytes,
