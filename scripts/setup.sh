@@ -21,6 +21,7 @@ packages=(
   python3-dev pybind11-dev                  # the Python module (python/)
   python3-numpy python3-pytest              # its arrays and its tests
   python3-nbclient python3-ipykernel        # its notebook, executed by the tests
+  python3-clang-14                          # checks the headers' examples against their declarations
 )
 
 if [ "${1:-}" = "fuzz" ]; then

@@ -2,6 +2,12 @@
 // in the triangle's bounding box. The simplest correct-looking method, and
 // the one whose failures lesson 02 measures: a pixel centre exactly on an
 // edge shared by two triangles is drawn by both.
+//
+//   const triangles::ScreenTriangle t{{{10, 10}, {90, 20}, {40, 80}}};
+//   const bool drawn = triangles::rasterize_bbox(t, width, height, [&](int x, int y, rl::vec3 b) {
+//       image.set(x, y, shade(b));  // b: the weights of t.v[0], t.v[1], t.v[2]
+//   });  // false: refused, a vertex beyond triangles::kMaxCoordinate
+//   triangles::rasterize_bbox(t, triangles::PixelRect{0, 0, 64, 64}, fragment_stage);  // one tile
 #pragma once
 
 #include "screen_triangle.hpp"

@@ -2,6 +2,12 @@
 // edge functions evaluated in 64-bit integers and stepped incrementally from
 // pixel to pixel, and the top-left rule for pixel centres exactly on an edge,
 // so that triangles sharing an edge cover each pixel exactly once.
+//
+//   const triangles::ScreenTriangle t{{{10.5f, 10}, {90, 20}, {40, 80.25f}}};
+//   triangles::rasterize_edge(t, width, height, [&](int x, int y, rl::vec3 b) {
+//       depth.set(x, y, triangles::interpolate(b, z0, z1, z2));  // each shared-edge pixel once
+//   });
+//   const rl::vec3 b = triangles::EdgeWeights(t).at(x, y);  // the same weights at one pixel
 #pragma once
 
 #include <cstdint>

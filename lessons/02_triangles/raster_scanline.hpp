@@ -1,6 +1,12 @@
 // The scanline method: sort the vertices by height, split the triangle at the
 // middle vertex into a part with a flat top and a part with a flat bottom,
 // and fill each row between its left and right edge.
+//
+//   triangles::rasterize_scanline(t, width, height, [&](int x, int y, rl::vec3 bary) {
+//       image.set(x, y, colour);  // row by row, bottom up, each row left to right
+//   });
+//   const float area = triangles::signed_area2(t);
+//   const rl::vec3 bary = triangles::barycentric(t, {x + 0.5f, y + 0.5f}, area);
 #pragma once
 
 #include <utility>

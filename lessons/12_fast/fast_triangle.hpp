@@ -5,8 +5,9 @@
 // divided by w (lesson 05's perspective-correct interpolation), with the
 // screen derivatives lesson 05 uses for the mip level.
 //
-//   const fast::FastTriangle t = fast::fast_triangle(setup, model, width, height);
-//   if (t.empty()) { /* no pixel centre inside: skip */ }
+//   fast::FastTriangle t;
+//   if (!fast::fast_triangle(setup, model, width, height, t)) { /* refused: count it */ }
+//   else if (t.empty()) { /* no pixel centre inside: skip */ }
 #pragma once
 
 #include <cstdint>

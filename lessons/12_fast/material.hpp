@@ -2,6 +2,12 @@
 // NormalMappedShader's uniforms (eye, lights, normal matrix, maps, options)
 // flattened into plain arrays that SIMD code broadcasts, with the textures
 // packed for gathers. Filled in place each frame (no allocation).
+//
+//   fast::Material material;  // one per model, refilled in place every frame
+//   material.filter = textures::Filter::trilinear;
+//   material.albedo = &diffuse;  // a fast::PackedTexture, or nullptr for material.colour
+//   material.normal_source = fast::NormalSource::tangent_map;
+//   material.normal_map = &tangent_map;
 #pragma once
 
 #include <cstdint>

@@ -5,8 +5,8 @@
 // the very texels lesson 07 reads.
 //
 //   const fast::PackedTexture packed(chain);   // once, outside the frame loop
-//   packed.texels[packed.level_offset[2] + y * packed.level_stride[2] + x]  // texel (x, y) of
-//   level 2 (each row holds a copy of its first texel at its end: stride = width + 1)
+//   // texel (x, y) of level 2 (each row ends with a copy of its first texel: stride = width + 1)
+//   packed.texels[packed.level_offset[2] + y * packed.level_stride[2] + x]
 #pragma once
 
 #include <cstdint>

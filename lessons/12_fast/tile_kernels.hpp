@@ -4,6 +4,12 @@
 // visible pixel once, and copy the tile into the frame. Tile buffers are laid
 // out in 8x8 blocks (pixel (x, y) of the tile at block (x/8, y/8), slot
 // (y%8)*8 + x%8), so a block's pixels sit side by side in memory.
+//
+//   fast::TileBuffers buffers(64);  // one per thread, reused tile after tile
+//   const fast::TileWork work{x0, y0, 64, 64, &frame_triangles, bin, bin_size, materials, {}};
+//   fast::TileCounts counts;
+//   fast::render_tile(work, buffers, frame, counts);  // frame: the rl::Image of the whole frame
+//   std::printf("kernels: %s\n", fast::simd_target());  // e.g. AVX2
 #pragma once
 
 #include <cstdint>

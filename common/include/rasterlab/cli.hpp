@@ -1,5 +1,12 @@
 // The options every lesson program shares, declared once so that every
 // program spells them, checks them and documents them the same way.
+//
+//   CLI::App app{"Lesson 02, triangles"};
+//   rl::ImageOptions image_options{"02_triangles.tga"};  // -o, --width, --height
+//   rl::add_image_options(app, image_options);
+//   rl::add_method_option(app, "--raster", method, triangles::kRasterMethods, "Rasterizer");
+//   rl::add_light_option(app, light);  // then rl::check_direction("--light", light)
+//   app.add_option("--near", near)->check(rl::positive_number());
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,5 +1,9 @@
 // The check every direction a user gives (a light's, say) passes before it
 // is normalised: shared by the programs' command lines and the Python module.
+//
+//   std::vector<float> light{1, 1, 1};  // from --light X Y Z
+//   rl::check_direction("--light", light);  // throws std::invalid_argument for 0 0 0
+//   const rl::vec3 to_light = rl::normalize(rl::vec3{light[0], light[1], light[2]});
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,10 @@
 // Image storage: a grid of pixels kept bottom row first, as OpenGL's window
 // coordinates are (pixel (0, 0) is the bottom-left one). See docs/00_framebuffer.md.
+//
+//   rl::Image image(800, 600, rl::kBackground);
+//   image.set(10, 20, rl::Rgba{255, 0, 0, 255});  // 10 pixels right, 20 up from the bottom-left
+//   rl::FloatImage depth(800, 600, 1.0f);  // any pixel type: rl::Grid<T>
+//   if (depth.contains(x, y) && z < depth.at(x, y)) depth.set(x, y, z);
 #pragma once
 
 #include <cstddef>

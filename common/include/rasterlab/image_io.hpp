@@ -1,6 +1,11 @@
 // Reading and writing images by file extension: .tga through our own codec,
 // JPEG through libjpeg-turbo, PNG and BMP through stb_image, PNG out through
 // stb_image_write; and float images (Radiance .hdr) through both.
+//
+//   const rl::Image diffuse = rl::load_image("obj/crate_diffuse.tga");  // .tga .png .jpg .bmp
+//   rl::check_image_output("out.png");  // before rendering: a bad path costs nothing
+//   rl::save_image("out.png", image);  // .tga or .png, by the extension
+//   const rl::HdrImage sky = rl::load_hdr_image("sky.hdr");  // linear float RGB
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,9 @@
 // How far apart two images are, in the figures the golden tests and the labs
 // report. Channels compared: red, green, blue (alpha is ignored).
+//
+//   const rl::ImageDiff d = rl::compare_images(expected, actual, 8);  // d.psnr, d.share_over ...
+//   rl::save_image("where.png", rl::difference_overlay(expected, actual, 8));  // magenta: over 8
+//   const rl::Image differences = rl::difference_image(expected, actual);
 #pragma once
 
 #include "rasterlab/image.hpp"

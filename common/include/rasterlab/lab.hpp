@@ -1,5 +1,10 @@
 // The labs' shared harness: Google Benchmark for the timing, a quick mode for
 // CI, and one CSV per lab that the plotting script turns into a chart.
+//
+//   const rl::lab::Options options = rl::lab::init(argc, argv, "Lesson 02 lab: rasterizers.");
+//   benchmark::RegisterBenchmark("edge/small", fill_all, &scene)->Unit(benchmark::kMicrosecond);
+//   const std::map<std::string, rl::lab::Timing> timings = rl::lab::run_benchmarks();
+//   const double ns = timings.at("edge/small").median_ns;  // then a CSV in options.out_dir
 #pragma once
 
 #include <filesystem>

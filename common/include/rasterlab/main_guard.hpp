@@ -1,4 +1,10 @@
 // The one place where a program's errors become a message and an exit code.
+//
+//   return rl::guarded_main("02_triangles", [&] {  // an exception: a message, exit code 1
+//       const rl::Mesh mesh = rl::load_obj(model, &warnings);
+//       rl::print_warnings("02_triangles", warnings);  // each distinct text once, 10 at most
+//       return 0;
+//   });
 #pragma once
 
 #include <exception>

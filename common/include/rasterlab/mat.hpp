@@ -1,5 +1,11 @@
 // Square matrices, row-major, acting on column vectors (M * v), as in OpenGL's
 // mathematics. mat3 and mat4 share one implementation.
+//
+//   rl::mat3 m = rl::mat3::identity();
+//   m[0][2] = 0.5f;  // row 0, column 2: a shear
+//   const rl::vec3 v = m * rl::vec3{1, 2, 3};  // each row dotted with v
+//   const float det = rl::determinant(m);
+//   if (const std::optional<rl::mat3> inverse = rl::inverse(m)) n = rl::transpose(*inverse) * n;
 #pragma once
 
 #include <algorithm>

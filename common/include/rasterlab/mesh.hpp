@@ -1,4 +1,9 @@
 // Triangle meshes loaded from Wavefront OBJ files through tinyobjloader.
+//
+//   std::vector<std::string> warnings;
+//   const rl::Mesh mesh = rl::load_obj(rl::project_model("rock"), &warnings);  // obj/rock.obj
+//   for (const rl::Face& face : mesh.faces)
+//       draw(mesh.position(face, 0), mesh.position(face, 1), mesh.position(face, 2));
 #pragma once
 
 #include <array>

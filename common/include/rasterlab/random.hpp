@@ -1,6 +1,10 @@
 // A small random number generator whose sequence is the same on every
 // platform and compiler (the distributions of <random> are not), for
 // generated assets and lab scenes that must be reproducible.
+//
+//   rl::SplitMix64 random(seed);  // the same sequence on every platform
+//   const double angle = random.uniform(0.0, 6.28318);  // uniform in [0, 2 pi)
+//   const std::uint64_t bits = random.next();
 #pragma once
 
 #include <cstdint>

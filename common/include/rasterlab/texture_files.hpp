@@ -1,5 +1,11 @@
 // Finding and loading the texture files that go with a mesh (the sampling of
 // textures is lesson 04's, in lessons/04_textures/sampling.hpp).
+//
+//   rl::TexelBudget budget;  // for the whole scene: 2^28 texels at most
+//   const rl::Texture normals =
+//       rl::load_texture(mesh, face.material, rl::TextureRole::normal_tangent, warnings);
+//   if (normals.is_default) { /* no map found: the neutral 1x1 stand-in */ }
+//   const auto spec = rl::find_texture(mesh, face.material, rl::TextureRole::specular);
 #pragma once
 
 #include <cstdint>

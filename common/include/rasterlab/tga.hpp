@@ -1,5 +1,10 @@
 // The TGA (Truevision TARGA) codec: lesson 00's subject, written by hand.
 // The format is explained in docs/00_framebuffer.md.
+//
+//   const rl::Image image = rl::read_tga("obj/crate_diffuse.tga");  // throws rl::TgaError
+//   rl::write_tga("out.tga", image, {.format = rl::TgaPixelFormat::bgra32, .rle = false});
+//   const std::vector<std::uint8_t> bytes = rl::encode_tga(image);  // RLE, 24-bit
+//   const rl::TgaHeader header = rl::parse_tga_header(bytes, "out.tga");
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,10 @@
 // Small fixed-size vectors: Vec<2|3|4, T> with named components x, y, z, w,
 // and the usual arithmetic written once for every size.
+//
+//   const rl::vec3 n = rl::normalize(rl::cross(b - a, c - a));  // a face normal
+//   const float lambert = std::max(0.0f, rl::dot(n, to_light));
+//   const rl::vec4 direction = rl::extend(n, 0.0f);  // w = 0: a direction, w = 1: a point
+//   const rl::dvec3 exact = rl::cast<double>(a);  // a double-precision reference
 #pragma once
 
 #include <algorithm>

@@ -3,7 +3,7 @@
 //
 //   const auto batch = triangles::random_triangles(1000, 100.0, 1024, 1);
 //   const triangles::CoverageScore s =
-//       triangles::score_coverage(triangles::RasterMethod::bbox, batch, 1024);
+//       triangles::score_coverage(triangles::RasterMethod::bbox, batch, 1024, 1024);
 #pragma once
 
 #include <cstdint>

@@ -6,7 +6,7 @@
 //
 //   const rl::Mesh mesh = shading::uv_sphere(64);
 //   const rl::Image truth = shading::sphere_truth(camera, 256, 256, lighting, albedo,
-//                                                 shading::Specular::blinn_phong);
+//                                                 shading::Specular::blinn_phong, rl::kBackground);
 #pragma once
 
 #include "05_perspective/camera.hpp"

@@ -9,7 +9,8 @@
 //
 //   const shadows::SceneRays rays(models);
 //   const shadows::TruthFrame truth = rays.truth(camera, 512, 512, map.light);
-//   const shadows::ShadowError e = shadows::compare(truth, shadows::probe(...));
+//   const shadows::ProbeFrame answers = shadows::probe(models, camera, 512, 512, options, map);
+//   const shadows::ShadowError e = shadows::compare(truth, answers);
 #pragma once
 
 #include "08_shadows/scene.hpp"
