@@ -21,6 +21,8 @@ packages=(
   python3-dev pybind11-dev                  # the Python module (python/)
   python3-numpy python3-pytest              # its arrays and its tests
   python3-nbclient python3-ipykernel        # its notebook, executed by the tests
+  jupyter-nbconvert jupyter-core            # the README's notebook command (jupyter nbconvert)
+  python3-venv python3-setuptools python3-pip python3-wheel  # pip install . into a venv
   python3-clang-14                          # checks the headers' examples against their declarations
 )
 

@@ -1,6 +1,6 @@
 """Renders lesson 07's scene from Python and saves it as a PNG.
 
-    PYTHONPATH=build/python python3 python/examples/render.py [out.png]
+    build/python/python3 python/examples/render.py [out.png]     # or a venv's python after pip install
 
 The same picture as `07_normal_mapping -o out.png`, byte for byte; then the
 same scene without its normal maps, and how many pixels that changes.

@@ -8,10 +8,31 @@
 The API is documented in docs/python.md.
 """
 
-from . import _core
-from ._core import Camera, Mesh, Result, load_mesh, read_image  # noqa: F401  (the package's API)
-from ._labs import run_lab as _run_lab
+import sys as _sys
+
 from ._programs import LABS as _LABS, LESSONS as _LESSONS
+from ._programs import PYTHON as _BUILT_FOR, PYTHON_VERSION as _BUILT_VERSION
+
+# An extension loads only into the Python version it was built for, and the
+# module needs numpy: say which interpreter to use rather than fail deep
+# inside an import.
+if _sys.version_info[:2] != _BUILT_VERSION:
+    raise ImportError(
+        f"rasterlab was built for Python {_BUILT_VERSION[0]}.{_BUILT_VERSION[1]} ({_BUILT_FOR}); "
+        f"this is Python {_sys.version_info[0]}.{_sys.version_info[1]} ({_sys.executable}). "
+        f"Run it with {_BUILT_FOR} (build/python/python3 does), or install it into this "
+        "Python: python3 -m pip install --no-build-isolation . (README.md)")
+try:
+    import numpy as _numpy  # noqa: F401
+except ImportError:
+    raise ImportError(
+        f"rasterlab needs numpy, which this Python ({_sys.executable}) does not have. Run it "
+        f"with {_BUILT_FOR}, which it was built for (build/python/python3 does), or install "
+        "numpy into this one") from None
+
+from . import _core  # noqa: E402
+from ._core import Camera, Mesh, Result, load_mesh, read_image  # noqa: E402,F401  (the API)
+from ._labs import run_lab as _run_lab  # noqa: E402
 
 
 def _add_lab(module, lesson):

@@ -1,5 +1,6 @@
 """Each lesson's lab from Python: `rasterlab.lesson02.lab(quick=True)` runs
-the lesson's lab program (the project's own, built beside this package) and
+the lesson's lab program (the project's own: in its build folder, or in the
+package's labs/ folder once installed with pip) and
 returns its tables, read from the CSV files it writes, as lists of dicts."""
 
 import csv
@@ -25,9 +26,9 @@ def run_lab(lesson, quick=True):
     table per CSV file the lab writes, each row a dict of its columns (numbers
     as int or float). Raises RuntimeError with the lab's own message if it
     fails."""
-    program = LABS[lesson]
+    program = pathlib.Path(__file__).parent / LABS[lesson]  # (an absolute path stays itself)
     with tempfile.TemporaryDirectory(prefix="rasterlab-lab-") as out:
-        args = [program, "--out", out] + (["--quick"] if quick else [])
+        args = [str(program), "--out", out] + (["--quick"] if quick else [])
         run = subprocess.run(args, capture_output=True, text=True)
         if run.returncode != 0:
             raise RuntimeError(f"{pathlib.Path(program).name} failed: {run.stderr.strip()}")
