@@ -117,6 +117,15 @@ TEST(ShadingTest, NormalMatrixKeepsNormalsPerpendicularUnderNonUniformScale) {
     EXPECT_GT(worst_normal_error(squash, false), 30.0);  // the model matrix itself: wrong
 }
 
+// A camera 4 units up the z axis, looking at the unit sphere at the origin.
+perspective::Camera camera_on_z_axis() {
+    perspective::Camera camera;
+    camera.eye = {0, 0, 4};
+    camera.near = 1;
+    camera.far = 10;
+    return camera;
+}
+
 TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     const rl::mat4 mirror = rl::compose({.scale = {-1.5f, 1.0f, 0.7f}});
     EXPECT_LT(worst_normal_error(mirror, true), 0.1);
@@ -124,10 +133,7 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     // so front faces are still drawn and the lit side still faces the light.
     const rl::Mesh sphere = uv_sphere(32);
     const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
-    perspective::Camera camera;
-    camera.eye = {0, 0, 4};
-    camera.near = 1;
-    camera.far = 10;
+    const perspective::Camera camera = camera_on_z_axis();
     const rl::mat4 mvp = perspective::view_projection(camera, 1.0f) * mirror;
     Uniforms u{.model_matrix = mirror,
                .normal_matrix = *normal_matrix(mirror),
@@ -150,10 +156,7 @@ TEST(ShadingTest, AModelWithoutATextureIsDrawnInItsColour) {
     // specular, seen from the light: the nearest point's light is the albedo.
     const rl::Mesh sphere = uv_sphere(64);
     const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
-    perspective::Camera camera;
-    camera.eye = {0, 0, 4};
-    camera.near = 1;
-    camera.far = 10;
+    const perspective::Camera camera = camera_on_z_axis();
     Lighting<float> lighting;
     lighting.lights.push_back({{0, 0, 1}, {1, 1, 1}});
     lighting.ambient = {};
