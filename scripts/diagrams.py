@@ -20,6 +20,9 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   07_tbn_frame.svg           a triangle in the texture and on the surface, with T and B
   08_two_passes.svg          the light's box and its map, the camera's frustum, a point in shadow
   08_acne.svg                a tilted surface against the map's stored depths: acne, and the bias
+  08_light_box_fit.svg       the light's box fitted to the scene or to the view: texel size
+  08_normal_offset.svg       the point looked up moved along its normal: acne gone, by a texel
+  08_pcf_kernel.svg          a 3x3 kernel's answers around (u, v), and the edge they soften
   12_tiles_and_bins.svg      a frame cut into tiles, each tile's bin of triangles, the owning thread
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
@@ -680,6 +683,144 @@ def acne(out):
     save(figure, out, "08_acne.svg")
 
 
+def light_box_fit(out):
+    # Side view, the light straight above (its box's sides vertical, its map
+    # along the top). A long floor with a crate; the camera low at the left,
+    # seeing only part of the floor. Scene fit: the box spans the whole floor;
+    # view fit: the box spans what the camera sees, its top still pushed over
+    # the scene. The same 8 texels on each.
+    figure, axes_pair = plt.subplots(1, 2, figsize=(8.6, 3.6), sharey=True)
+    floor = (-4.0, 4.0)
+    seen = (-1.0, 2.0)
+    for axes, (x0, x1), title in ((axes_pair[0], floor, "--fit scene: the whole scene's box"),
+                                  (axes_pair[1], seen, "--fit view: the box around what the camera sees")):
+        axes.plot(list(floor), [0, 0], color=INK, lw=1.5)
+        axes.add_patch(Rectangle((1.0, 0), 0.8, 0.8, color="#c08040", alpha=0.8))
+        eye = (-2.2, 1.0)
+        axes.plot([eye[0]], [eye[1]], "o", color=LINE)
+        axes.text(eye[0], eye[1] + 0.2, "camera", fontsize=7, ha="center", color=LINE)
+        for target in seen:
+            axes.plot([eye[0], target], [eye[1], 0], color=LINE, lw=0.8, ls="--")
+        top = 2.6
+        axes.add_patch(Rectangle((x0, -0.2), x1 - x0, top + 0.2, fill=False, ec=ACCENT, lw=1.2, ls="--"))
+        texels = 8
+        width = (x1 - x0) / texels
+        for i in range(texels + 1):
+            axes.plot([x0 + i * width] * 2, [top - 0.12, top + 0.12], color=ACCENT, lw=1)
+        axes.plot([x0, x1], [top, top], color=ACCENT, lw=2)
+        unit = "unit" if width == 1 else "units"
+        axes.text((x0 + x1) / 2, top + 0.3, f"8 texels, {width:.2g} {unit} each", color=ACCENT,
+                  fontsize=8, ha="center")
+        axes.annotate("", xy=(3.6, 2.0), xytext=(3.6, 3.2),
+                      arrowprops=dict(arrowstyle="->", color=INK, lw=1))
+        axes.text(3.7, 2.9, "light", fontsize=7)
+        axes.set_title(title, fontsize=8)
+        axes.set_xlim(-4.3, 4.3)
+        axes.set_ylim(-0.5, 3.4)
+        axes.set_aspect("equal")
+        axes.axis("off")
+    figure.text(0.5, 0.04, "The same 8 texels: fitted to what the camera sees (between the dashed blue "
+                "lines), each covers 0.38 units instead of 1.\nThe box's side towards the light is "
+                "still pushed out over the whole scene, so that a caster outside the view still casts.",
+                fontsize=7, ha="center")
+    save(figure, out, "08_light_box_fit.svg")
+
+
+def normal_offset(out):
+    # The acne staircase again (the map's texels store the surface's depth at
+    # their centres), the light above. Left: P looked up where it is: deeper
+    # than its texel's step on half of each texel. Right: P moved along its
+    # normal by one texel before the lookup: the point looked up lies above
+    # every step, so nothing on the surface is shadowed by itself.
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.4), sharey=True)
+    slope = 0.45
+    length = math.hypot(1, slope)
+    normal = (-slope / length, -1 / length)  # towards the light (up the page: depth shrinks)
+    xs = [i / 20 for i in range(0, 121)]
+    for axes, offset, title in ((left, 0.0, "no offset: P below its step half the time"),
+                                (right, 1.0, "normal offset, 1 texel: the lookup moves off the surface")):
+        axes.plot(xs, [slope * x for x in xs], color=INK, lw=1.5)
+        for i in range(6):
+            stored = slope * (i + 0.5)
+            axes.plot([i, i + 1], [stored, stored], color=ACCENT, lw=1.6)
+        for x in xs[::2]:
+            px, pz = x + normal[0] * offset, slope * x + normal[1] * offset
+            if not 0 <= px < 6:
+                continue
+            texel = min(int(px), 5)
+            shadowed = pz > slope * (texel + 0.5) + 1e-9
+            axes.plot([px], [pz], "s" if shadowed else "o", color="#9040a0" if shadowed else LINE,
+                      markersize=3)
+        if offset:
+            x = 2.3
+            axes.annotate("", xy=(x + normal[0] * offset, slope * x + normal[1] * offset),
+                          xytext=(x, slope * x), arrowprops=dict(arrowstyle="->", color=LINE, lw=1))
+            axes.text(x + 0.15, slope * x + 0.05, "P", fontsize=8)
+            axes.text(4.4, 1.0, "each point P looked up\none texel along its normal", fontsize=7,
+                      color=LINE, ha="center", bbox=dict(fc="white", ec="none", pad=1))
+        axes.set_title(title, fontsize=8)
+        axes.set_xlabel("across the map (texels)", fontsize=8)
+        axes.tick_params(labelsize=7)
+    left.invert_yaxis()
+    left.set_ylabel("depth from the light (down the page)", fontsize=8)
+    figure.text(0.5, 0.01, "black: the surface; red: the depth each texel stored; blue: the points "
+                "looked up, lit; purple: looked up deeper than their texel's depth (acne)",
+                fontsize=7, ha="center")
+    figure.subplots_adjust(bottom=0.22)
+    save(figure, out, "08_normal_offset.svg")
+
+
+def pcf_kernel(out):
+    # Left: the map's texels around the lookup (u, v), a shadow edge running
+    # through them; each texel of the 3x3 kernel answers lit (1) or shadowed
+    # (0) for P's depth, and the answers average. Right: visibility along a
+    # line across the edge: the hard test's step, and 3x3 PCF's ramp three
+    # texels wide.
+    figure, (grid, ramp) = plt.subplots(1, 2, figsize=(8.6, 3.6),
+                                        gridspec_kw={"width_ratios": [1, 1.3]})
+    u, v = 2.35, 2.6  # the lookup, in texels
+    edge = lambda x: 0.6 * x + 1.05  # noqa: E731  the caster's edge: shadowed above it
+    lit = 0
+    ci, cj = int(u), int(v)
+    for i in range(5):
+        for j in range(5):
+            shadowed = j + 0.5 > edge(i + 0.5)
+            in_kernel = abs(i - ci) <= 1 and abs(j - cj) <= 1
+            colour = "#b8b8b8" if shadowed else "#fff4c8"
+            grid.add_patch(Rectangle((i, j), 1, 1, fc=colour, ec="#888888", lw=0.6))
+            if in_kernel:
+                lit += 0 if shadowed else 1
+                grid.text(i + 0.5, j + 0.5, "0" if shadowed else "1", ha="center", va="center",
+                          fontsize=10, color=INK)
+    grid.add_patch(Rectangle((ci - 1, cj - 1), 3, 3, fill=False, ec=ACCENT, lw=2))
+    grid.plot([0, 5], [edge(0), edge(5)], color=INK, lw=1, ls="--")
+    grid.plot([u], [v], "o", color=LINE)
+    grid.text(u - 0.08, v + 0.1, "(u, v)", fontsize=8, color=LINE, ha="right",
+              bbox=dict(fc="white", ec="none", pad=0.5))
+    grid.set_title(f"3x3 PCF at (u, v): {lit} of 9 texels say lit -> {lit / 9:.2f}", fontsize=8)
+    grid.text(2.5, -0.45, "grey: the map's depth is nearer than P (a caster: shadowed); dashed: its edge",
+              fontsize=7, ha="center")
+    grid.set_xlim(-0.1, 5.1)
+    grid.set_ylim(-0.7, 5.1)
+    grid.set_aspect("equal")
+    grid.axis("off")
+    xs = [i / 50 for i in range(-150, 151)]
+    hard = [1.0 if x < 0 else 0.0 for x in xs]
+    pcf3 = []
+    for x in xs:  # the mean of the hard answers at three texel centres around x
+        answers = [1.0 if (math.floor(x + d) + 0.5) < 0 else 0.0 for d in (-1, 0, 1)]
+        pcf3.append(sum(answers) / 3)
+    ramp.plot(xs, hard, color=INK, lw=1.5, label="hard test: 0 or 1")
+    ramp.plot(xs, pcf3, color=ACCENT, lw=1.5, label="3x3 PCF: 1, 2/3, 1/3, 0 across the edge")
+    ramp.set_xlabel("across the shadow's edge (map texels)", fontsize=8)
+    ramp.set_ylabel("visibility (1: lit)", fontsize=8)
+    ramp.tick_params(labelsize=7)
+    ramp.legend(fontsize=7, loc="lower left")
+    ramp.set_title("The answers are averaged, never the depths", fontsize=8)
+    figure.tight_layout()
+    save(figure, out, "08_pcf_kernel.svg")
+
+
 def edge_inside(tri, px, py):
     """Whether (px, py) is inside the counter-clockwise triangle (float, for the figures)."""
     for k in range(3):
@@ -854,7 +995,7 @@ def main():
     plt.rcParams["svg.hashsalt"] = "rasterlab"  # the same SVG on every run
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
-                 mirrored_seam, tbn_frame, two_passes, acne, tiles_and_bins, blocks, visibility_buffer,
+                 mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
                  lane_queue):
         draw(out)
 
