@@ -27,6 +27,7 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
   12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
+  13_frame_path.svg          one frame of the viewer, from the keyboard to the window
 """
 import math
 import pathlib
@@ -989,6 +990,47 @@ def lane_queue(out):
     save(figure, out, "12_lane_queue.svg")
 
 
+def frame_path(out):
+    # The viewer's loop as boxes: the input changes plain state, the state
+    # draws a frame in memory (bottom row first), and the frame goes to the
+    # window through SDL, its rows mirrored by the copy, not on the CPU.
+    figure, axes = plt.subplots(figsize=(8.6, 3.2))
+    boxes = [  # (x, y, text, file, colour)
+        (0.0, 1.6, "events\n(SDL_PollEvent)", "sdl_window.cpp", SOFT),
+        (2.3, 1.6, "keys, drags,\nwheel", "sdl_window.cpp", SOFT),
+        (4.6, 1.6, "Settings + Orbit\n(plain data)", "controls.cpp", SOFT),
+        (6.9, 1.6, "FrameRenderer:\nfast path, 07 or 08", "frame_renderer.cpp", "#fff4c8"),
+        (6.9, 0.0, "upload the frame\n(SDL_UpdateTexture)", "sdl_window.cpp", SOFT),
+        (4.6, 0.0, "copy, rows flipped\n(SDL_RenderCopyEx)", "sdl_window.cpp", "#f8dcd4"),
+        (2.3, 0.0, "present\n(SDL_RenderPresent)", "sdl_window.cpp", SOFT),
+        (0.0, 0.0, "the window\n(top row first)", "", SOFT),
+    ]
+    width, height = 1.9, 0.9
+    for x, y, text, source, colour in boxes:
+        axes.add_patch(Rectangle((x, y), width, height, fc=colour, ec=INK, lw=0.8))
+        axes.text(x + width / 2, y + height / 2, text, ha="center", va="center", fontsize=9)
+        if source:
+            axes.text(x + width / 2, y - 0.12, source, ha="center", va="top", fontsize=8,
+                      color=LINE)
+    arrow = dict(arrowstyle="->", color=INK, lw=1)
+    for (x0, y0, *_), (x1, y1, *_) in zip(boxes, boxes[1:]):
+        if y0 == y1:  # along a row: from one box's side to the next one's
+            start = (x0 + width, y0 + height / 2) if x1 > x0 else (x0, y0 + height / 2)
+            end = (x1, y1 + height / 2) if x1 > x0 else (x1 + width, y1 + height / 2)
+        else:  # down the right-hand side
+            start, end = (x0 + width / 2, y0 - 0.35), (x1 + width / 2, y1 + height)
+        axes.annotate("", xy=end, xytext=start, arrowprops=arrow)
+    axes.text(7.85, 2.75, "the frame in memory: bottom row first (OpenGL's way)", ha="center",
+              fontsize=9, color=ACCENT)
+    axes.text(5.55, -0.75, "the one flip: without it the picture is upside down", ha="center",
+              fontsize=9, color=ACCENT)
+    axes.set_xlim(-0.2, 9.0)
+    axes.set_ylim(-1.0, 3.0)
+    axes.axis("off")
+    axes.set_title("One frame of the viewer, from the keyboard to the window", fontsize=10)
+    save(figure, out, "13_frame_path.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
@@ -996,7 +1038,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue):
+                 lane_queue, frame_path):
         draw(out)
 
 

@@ -9,7 +9,7 @@ int main(int argc, char** argv) {
     CLI::App app{
         "Convert an image: reads TGA/PNG/JPG/BMP, writes .tga (RLE) or .png by extension."};
     std::string input, output;
-    bool keep_alpha = false;
+    bool keep_alpha = false, flip = false;
     int scale = 1;
     std::vector<int> crop;
     app.add_option("input", input, "Image to read")->required();
@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
                    "Enlarge by this whole factor, each pixel a square block "
                    "(for close-ups in the docs)")
         ->check(CLI::Range(1, 64));
+    app.add_flag("--flip", flip,
+                 "Turn the image upside down (its rows in the opposite order): what a window "
+                 "shows when a bottom-row-first frame is sent as it is");
     app.add_option("--crop", crop, "Keep only the rectangle X Y W H (X, Y: its bottom-left pixel)")
         ->expected(4);
     CLI11_PARSE(app, argc, argv);
@@ -36,6 +39,7 @@ int main(int argc, char** argv) {
                 for (int x = 0; x < w; ++x) part.set(x, y, image.get(x0 + x, y0 + y));
             image = part;
         }
+        if (flip) image.flip_vertically();
         rl::Image scaled(image.width() * scale, image.height() * scale);
         for (int y = 0; y < scaled.height(); ++y)
             for (int x = 0; x < scaled.width(); ++x)
