@@ -673,15 +673,29 @@ def acne(out):
             if shadowed:
                 axes.plot([x], [slope * x], "s", color="#9040a0", markersize=3)
         axes.set_title(title, fontsize=8)
+    finish_staircase(figure, left, right, out, "08_acne.svg",
+                     "black: the surface; red: the depth each texel stored (at its centre); "
+                     "purple: points deeper than their texel's depth, which the test calls shadowed")
+
+
+def finish_staircase(figure, left, right, out, name, caption):
+    """The axes, the caption and the file of a two-panel map-staircase figure."""
+    for axes in (left, right):
         axes.set_xlabel("across the map (texels)", fontsize=8)
         axes.tick_params(labelsize=7)
     left.invert_yaxis()  # shared: once for both
     left.set_ylabel("depth from the light (down the page)", fontsize=8)
-    figure.text(0.5, 0.01, "black: the surface; red: the depth each texel stored (at its centre); "
-                "purple: points deeper than their texel's depth, which the test calls shadowed",
-                fontsize=7, ha="center")
+    figure.text(0.5, 0.01, caption, fontsize=7, ha="center")
     figure.subplots_adjust(bottom=0.22)
-    save(figure, out, "08_acne.svg")
+    save(figure, out, name)
+
+
+def bare(axes, xlim, ylim):
+    """Axes for a drawing, not a plot: these limits, square units, no frame or ticks."""
+    axes.set_xlim(*xlim)
+    axes.set_ylim(*ylim)
+    axes.set_aspect("equal")
+    axes.axis("off")
 
 
 def light_box_fit(out):
@@ -716,10 +730,7 @@ def light_box_fit(out):
                       arrowprops=dict(arrowstyle="->", color=INK, lw=1))
         axes.text(3.7, 2.9, "light", fontsize=7)
         axes.set_title(title, fontsize=8)
-        axes.set_xlim(-4.3, 4.3)
-        axes.set_ylim(-0.5, 3.4)
-        axes.set_aspect("equal")
-        axes.axis("off")
+        bare(axes, (-4.3, 4.3), (-0.5, 3.4))
     figure.text(0.5, 0.04, "The same 8 texels: fitted to what the camera sees (between the dashed blue "
                 "lines), each covers 0.38 units instead of 1.\nThe box's side towards the light is "
                 "still pushed out over the whole scene, so that a caster outside the view still casts.",
@@ -760,15 +771,9 @@ def normal_offset(out):
             axes.text(4.4, 1.0, "each point P looked up\none texel along its normal", fontsize=7,
                       color=LINE, ha="center", bbox=dict(fc="white", ec="none", pad=1))
         axes.set_title(title, fontsize=8)
-        axes.set_xlabel("across the map (texels)", fontsize=8)
-        axes.tick_params(labelsize=7)
-    left.invert_yaxis()
-    left.set_ylabel("depth from the light (down the page)", fontsize=8)
-    figure.text(0.5, 0.01, "black: the surface; red: the depth each texel stored; blue: the points "
-                "looked up, lit; purple: looked up deeper than their texel's depth (acne)",
-                fontsize=7, ha="center")
-    figure.subplots_adjust(bottom=0.22)
-    save(figure, out, "08_normal_offset.svg")
+    finish_staircase(figure, left, right, out, "08_normal_offset.svg",
+                     "black: the surface; red: the depth each texel stored; blue: the points "
+                     "looked up, lit; purple: looked up deeper than their texel's depth (acne)")
 
 
 def pcf_kernel(out):
@@ -801,10 +806,7 @@ def pcf_kernel(out):
     grid.set_title(f"3x3 PCF at (u, v): {lit} of 9 texels say lit -> {lit / 9:.2f}", fontsize=8)
     grid.text(2.5, -0.45, "grey: the map's depth is nearer than P (a caster: shadowed); dashed: its edge",
               fontsize=7, ha="center")
-    grid.set_xlim(-0.1, 5.1)
-    grid.set_ylim(-0.7, 5.1)
-    grid.set_aspect("equal")
-    grid.axis("off")
+    bare(grid, (-0.1, 5.1), (-0.7, 5.1))
     xs = [i / 50 for i in range(-150, 151)]
     hard = [1.0 if x < 0 else 0.0 for x in xs]
     pcf3 = []
