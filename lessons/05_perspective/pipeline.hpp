@@ -335,12 +335,18 @@ void store(RenderTarget<Pixels...>& target, int column, int y, const Outputs& ou
     }
 }
 
-// The window depth at weights b: interpolated with the plain weights (window
-// depth is linear on screen), plus the target's bias (lesson 08's), kept in [0, 1].
+// The target's depth bias (lesson 08's) for triangle t: constant, plus
+// slope-scaled by the triangle's depth slope. Once per triangle.
 template <Interpolable V, class F>
-float window_depth(const TriangleSetup<V, F>& t, rl::vec3 b, const zbuffer::DepthState& state) {
+float depth_bias(const TriangleSetup<V, F>& t, const zbuffer::DepthState& state) {
+    return state.constant_bias + state.slope_bias * t.depth_slope;
+}
+
+// The window depth at weights b: interpolated with the plain weights (window
+// depth is linear on screen), plus the bias, kept in [0, 1].
+template <Interpolable V, class F>
+float window_depth(const TriangleSetup<V, F>& t, rl::vec3 b, float bias) {
     const float z = zbuffer::interpolate_depth(b, t.window[0].z, t.window[1].z, t.window[2].z);
-    const float bias = state.constant_bias + state.slope_bias * t.depth_slope;
     return bias != 0 ? std::clamp(z + bias, 0.0f, 1.0f) : z;
 }
 
@@ -377,9 +383,10 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
                         RenderTarget<Pixels...>& target, const PipelineOptions& options,
                         PipelineCounts& counts) {
     const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+    const float bias = depth_bias(t, target.depth_state);
     counts.visited += box_samples(t.screen(), rect);
     return triangles::rasterize(options.raster, t.screen(), rect, [&](int x, int y, rl::vec3 b) {
-        const float z = window_depth(t, b, target.depth_state);
+        const float z = window_depth(t, b, bias);
         if (fragment_operations(program, t, x, y, z, b, target, x)) ++counts.fragments;
     });
 }

@@ -279,13 +279,14 @@ struct FourSamplesEachShaded {
     bool operator()(const T& t, const P& program, RenderTarget<Pixels...>& target,
                     const PipelineOptions& options, PipelineCounts& counts) const {
         const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+        const float bias = depth_bias(t, target.depth_state);
         const triangles::PixelWeights centres(options.raster, t.screen());
         counts.visited += 4 * box_samples(t.screen(), rect);
         bool ok = true;
         for (int s = 0; s < 4; ++s)
             ok &= triangles::rasterize(
                 options.raster, t.screen(kFourSamples[s]), rect, [&](int x, int y, rl::vec3 b) {
-                    const float z = window_depth(t, b, target.depth_state);
+                    const float z = window_depth(t, b, bias);
                     if (fragment_operations(program, t, x, y, z, centres.at(x, y), target,
                                             4 * x + s))
                         ++counts.fragments;
@@ -301,6 +302,7 @@ struct FourSamplesShadedOnce {
     bool operator()(const T& t, const P& program, RenderTarget<Pixels...>& target,
                     const PipelineOptions& options, PipelineCounts& counts) const {
         const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+        const float bias = depth_bias(t, target.depth_state);
         const int width = rect.x1 - rect.x0;
         std::vector<float> passed(4 * static_cast<std::size_t>(width * (rect.y1 - rect.y0)), NAN);
         const auto slot = [&](int x, int y, int s) -> float& {
@@ -312,7 +314,7 @@ struct FourSamplesShadedOnce {
         for (int s = 0; s < 4; ++s)
             ok &= triangles::rasterize(options.raster, t.screen(kFourSamples[s]), rect,
                                        [&](int x, int y, rl::vec3 b) {
-                                           const float z = window_depth(t, b, target.depth_state);
+                                           const float z = window_depth(t, b, bias);
                                            if (zbuffer::depth_passes(target.depth_state.compare, z,
                                                                      depth.at(4 * x + s, y)))
                                                slot(x, y, s) = z;
@@ -324,8 +326,8 @@ struct FourSamplesShadedOnce {
                                  [](float z) { return !std::isnan(z); }))
                     continue;
                 const rl::vec3 b = centres.at(x, y);
-                const auto colour = program.fragment(
-                    fragment_at(t, x, y, window_depth(t, b, target.depth_state), b));
+                const auto colour =
+                    program.fragment(fragment_at(t, x, y, window_depth(t, b, bias), b));
                 for (int s = 0; s < 4; ++s) {
                     if (std::isnan(slot(x, y, s))) continue;
                     store(target, 4 * x + s, y, colour);
