@@ -19,7 +19,10 @@ that
   outside code, the count of KaTeX's formulas equals the count of formulas in
   the page's Markdown (docs/NAME.md), counted here on their own, and KaTeX's
   stylesheet applies to them;
-- no display formula is wider than the page's column (it would need scrolling);
+- no display formula is wider than the page's column (it would need scrolling),
+  and no code block's lines run past it;
+- no figure is shown smaller than its own pixels where the column has room
+  for it two to a row (at most 45% of the column);
 - a lesson's page links to the previous and the next page;
 - no Markdown table is left as text (a table inside HTML that the Markdown
   reader did not enter);
@@ -204,13 +207,20 @@ PAGE_FACTS = r"""
       .filter(c => [...c.childNodes].some(n => n.nodeType === Node.TEXT_NODE &&
                                                 /\*\*|`|\]\(|<!--|-->/.test(n.textContent)))
       .map(c => c.textContent.trim().slice(0, 80));
-  // A figure shown at less than half its own width (three or four to a row
-  // in the column: a 2x crop shown at 0.4x). The models' textures (obj/) are
-  // thumbnails of whole maps, not figures.
+  // A figure shown smaller than its own pixels, where the column had room
+  // for it two to a row (a failure beside its fix): three or four to a row, a
+  // 2x crop shrank back to under 1x. A figure wider than half the column may
+  // shrink to that half. The models' textures (obj/) are thumbnails of whole
+  // maps, not figures.
+  const column = (document.querySelector("article") || document.body).getBoundingClientRect().width;
   const narrow = [...document.querySelectorAll("article img")].filter(
       i => i.naturalWidth > 0 && !/\/obj\//.test(i.currentSrc || i.src) &&
-           i.getBoundingClientRect().width < i.naturalWidth / 2).map(
+           i.getBoundingClientRect().width + 2 < Math.min(i.naturalWidth, 0.45 * column)).map(
       i => `${(i.currentSrc || i.src).split("/").pop()} at ${Math.round(i.getBoundingClientRect().width)} px of ${i.naturalWidth}`);
+  // A code block whose lines run past the column: their ends are hidden
+  // until the reader scrolls it sideways.
+  const cut = [...document.querySelectorAll("article pre > code")].filter(
+      c => c.scrollWidth > c.clientWidth + 1).map(c => c.textContent.split("\n")[0].slice(0, 60));
   return {
     images: [...document.images].map(i => ({src: i.currentSrc || i.src, width: i.naturalWidth})),
     links: [...document.querySelectorAll("a[href]")].map(a => a.href),
@@ -227,6 +237,7 @@ PAGE_FACTS = r"""
     rows_as_text: rowsAsText,
     cells: cells,
     narrow: narrow,
+    cut: cut,
     // A display formula grows to its width; the block around it scrolls.
     wide: [...document.querySelectorAll("div.arithmatex")].filter(
         e => e.scrollWidth > e.clientWidth + 1).map(e => e.textContent.slice(0, 60)),
@@ -399,7 +410,8 @@ def check_pages(options, pages: list, chromium: str, base: str) -> int:
             problems += [f"a list run into a paragraph: {text}..." for text in facts["run_on"]]
             problems += [f"table rows shown as a paragraph: {text}..." for text in facts["rows_as_text"]]
             problems += [f"a table cell holding markup: {text}..." for text in facts["cells"]]
-            problems += [f"an image shown narrower than half its width: {text}" for text in facts["narrow"]]
+            problems += [f"an image shown smaller than its own width: {text}" for text in facts["narrow"]]
+            problems += [f"a code block cut at the right: {text}..." for text in facts["cut"]]
             problems += [f"a display formula wider than the page's column ({WIDTH} px "
                          f"window): {text}..." for text in facts["wide"]]
             if re.match(r"\d\d_", page) and not (facts["previous"] and facts["next"]):

@@ -5,8 +5,8 @@ breakage per page: a missing image, a link to an anchor that is not there, a
 formula KaTeX cannot read, a formula left untypeset, a search index that
 has lost a word, and what issue 34 found on the pages: a value marker shown as
 text, a list run into the paragraph above it, table rows cut off from their
-table, Markdown left in a table cell, and a figure shown at under half its
-width. Each must be named in the check's report, and the check must exit 1.
+table, Markdown left in a table cell, a figure shown smaller than its own
+width, and a code block cut at the right. Each must be named in the check's report, and the check must exit 1.
 
     tests/scripts/check_site_selftest.py SITE_DIR
 """
@@ -67,13 +67,16 @@ def break_site(site: pathlib.Path) -> list:
         "<p>| 64 | 3.1 |\n| 128 | 6.0 |</p>"
         # a 2x crop squeezed into a quarter of the column
         '<img src="images/02_overdraw_edge.png" style="width: 20px">'
+        # a code line that does not wrap, past the column
+        '<pre><code style="white-space: pre">auto far_too_long = ' + "x" * 300 + ";</code></pre>"
         "</article>"), 1))
     expected += ["02_triangles.html: markup left in the text: <!-- value: docs/charts/12_sizes.md",
                  "02_triangles.html: a table cell holding markup: **42**",
                  "02_triangles.html: a list run into a paragraph: Where it breaks:",
                  "02_triangles.html: table rows shown as a paragraph: | 64 | 3.1 |",
-                 "02_triangles.html: an image shown narrower than half its width: "
-                 "02_overdraw_edge.png at 20 px"]
+                 "02_triangles.html: an image shown smaller than its own width: "
+                 "02_overdraw_edge.png at 20 px",
+                 "02_triangles.html: a code block cut at the right: auto far_too_long"]
     # A search index that has lost a word finds nothing for it.
     index = site / "search" / "search_index.json"
     entries = json.loads(index.read_text())
