@@ -17,6 +17,7 @@
 #include <set>
 
 #include "02_triangles/lab/triangle_measure.hpp"
+#include "02_triangles/overdraw.hpp"
 #include "06_shading/colour.hpp"
 #include "07_normal_mapping/scene.hpp"
 #include "12_fast/lab/coverage_check.hpp"
@@ -120,6 +121,45 @@ TEST(WorkedExample, TheBlocksOfThePage) {
     EXPECT_EQ(counts.blocks_partial, 5u);
     EXPECT_EQ(counts.depth_passed, 190u);
     EXPECT_EQ(lesson02({{{0, 0}, {20, 0}, {0, 20}}}, 64, 64).size(), 190u);
+}
+
+// docs/12_fast.md's failure pictures (12_failures): a 64x64 fan of twelve
+// triangles in tiles of 16, through the tile kernels with one mistake of the
+// tile loop each. Right, no pixel differs from lesson 02's edge rasterizer;
+// each mistake changes the pixels the page counts, in the way it says.
+TEST(Coverage, TheTileLoopMistakesOfThePage) {
+    const int size = 64, slices = 12;
+    const rl::Image right = triangles::fan_owners(
+        triangles::covered_by(triangles::RasterMethod::edge, size, size), size, slices);
+    const rl::Rgba twice{230, 30, 30, 255}, none{0, 0, 0, 255};
+    struct Count {
+        int differing = 0, drawn_twice = 0, undrawn = 0;
+    };
+    auto count = [&](fast::CoverageMistake mistake) {
+        const rl::Image picture = triangles::fan_owners(
+            [&](const ScreenTriangle& t) {
+                return fast::covered_pixels(t, size, size, 16, {}, mistake).value();
+            },
+            size, slices);
+        Count c;
+        for (int y = 0; y < size; ++y)
+            for (int x = 0; x < size; ++x) {
+                const rl::Rgba p = picture.get(x, y), q = right.get(x, y);
+                c.differing += p != q;
+                c.drawn_twice += p == twice;
+                c.undrawn += p == none && q != none;
+            }
+        return c;
+    };
+    EXPECT_EQ(count(fast::CoverageMistake::none).differing, 0);
+    const Count inclusive = count(fast::CoverageMistake::inclusive_ties);
+    EXPECT_EQ(inclusive.differing, 105);
+    EXPECT_EQ(inclusive.drawn_twice, 105);  // every differing pixel drawn twice
+    const Count exclusive = count(fast::CoverageMistake::exclusive_ties);
+    EXPECT_EQ(exclusive.differing, 105);
+    EXPECT_EQ(exclusive.undrawn, 105);  // the same centres, drawn by none
+    EXPECT_EQ(count(fast::CoverageMistake::tile_origin).differing, 773);
+    EXPECT_EQ(count(fast::CoverageMistake::shared_buffer).differing, 1451);
 }
 
 TEST(Coverage, RefusesWhatLessonTwoRefuses) {
