@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
                                      cone->count() > 0);
         shadows::set_lights(options, view, one_light);
         options.map.cull = shadows::cull_for(map_faces);
+        options.casters = show != shadows::Show::unshadowed;
         std::vector<std::string> warnings;
         const auto [models, camera] = shadows::load_scene(view, tangents, width, height, warnings);
         rl::print_warnings("08_shadows", warnings);
@@ -97,8 +98,8 @@ int main(int argc, char** argv) {
         const perspective::PipelineCounts counts =
             shadows::render(models, camera, options, map, frame);
         const auto done = std::chrono::steady_clock::now();
-        rl::save_image(output, show == shadows::Show::image ? frame.colour()
-                                                            : zbuffer::depth_picture(map.depth));
+        rl::save_image(output, show == shadows::Show::shadow_map ? zbuffer::depth_picture(map.depth)
+                                                                 : frame.colour());
         // [/doc:lesson08-main]
         const std::chrono::duration<double, std::milli> map_ms = mapped - start,
                                                         frame_ms = done - mapped;

@@ -73,7 +73,8 @@ ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
         covered.add(rl::vec3{-1, -1, -1});
         covered.add(rl::vec3{1, 1, 1});
     }
-    return render_shadow_map(models, light_view(options.light, covered, scene), options.map);
+    return render_shadow_map(options.casters ? models : std::vector<normal_mapping::MappedModel>{},
+                             light_view(options.light, covered, scene), options.map);
 }
 
 SplitLighting split_lighting(const ShadowOptions& options) {

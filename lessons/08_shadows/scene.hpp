@@ -17,13 +17,16 @@ struct ShadowOptions {
     Fit fit = Fit::view;
     ShadowMapOptions map;
     ShadowLookup lookup;
+    bool casters = true;  // false: the same light's map with nothing in it: no shadows
 };
 
-// What the program writes: the image, or the shadow map's depth as a picture.
-enum class Show { image, shadow_map };
-inline constexpr std::array<rl::Named<Show>, 2> kShowNames = {
-    {{Show::image, "image"}, {Show::shadow_map, "shadow-map"}}};
-inline constexpr std::array<Show, 2> kShows = rl::values_of(kShowNames);
+// What the program writes: the image, the shadow map's depth as a picture,
+// or the image with nothing in the map (no shadows: lesson 07's lighting,
+// the "before" of the page's opening picture).
+enum class Show { image, shadow_map, unshadowed };
+inline constexpr std::array<rl::Named<Show>, 3> kShowNames = {
+    {{Show::image, "image"}, {Show::shadow_map, "shadow-map"}, {Show::unshadowed, "unshadowed"}}};
+inline constexpr std::array<Show, 3> kShows = rl::values_of(kShowNames);
 inline const char* name(Show value) {
     return rl::name_in(kShowNames, value);
 }

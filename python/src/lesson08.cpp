@@ -42,6 +42,7 @@ void bind_lesson08(py::module_ m) {
             options.map.cull =
                 shadows::cull_for(choice("--map-faces", map_faces, shadows::kMapFaces));
             const shadows::Show picture = choice("--show", show, shadows::kShows);
+            options.casters = picture != shadows::Show::unshadowed;
             options.render.normal_map =
                 choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);

@@ -157,6 +157,11 @@ def test_lesson08_shadow_map_picture(programs):
          programs.image("08", "--show", "shadow-map", "--shadow-map-size", 128, *SIZE))
 
 
+def test_lesson08_unshadowed(programs):
+    same(rasterlab.lesson08.render(show="unshadowed", one_light=True, **SMALL),
+         programs.image("08", "--show", "unshadowed", "--one-light", *SIZE))
+
+
 @pytest.mark.parametrize("threads", [1, 2])
 def test_lesson12(programs, threads):
     same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),

@@ -364,6 +364,40 @@ TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
     EXPECT_GT(in_shadow, 40) << "the crate's shadow should cover some of the floor (78 pixels)";
 }
 
+// --show unshadowed, the page's "before" picture: the same light with
+// nothing in its map is lesson 07's render, every light whole.
+TEST(ShadowsTest, WithoutCastersTheImageIsLessonSevens) {
+    const std::vector<MappedModel> models = floor_scene(true);
+    perspective::Camera camera;
+    camera.eye = {2.5f, 3.0f, 3.5f};
+    camera.target = {0, 0, 0};
+    camera.near = 0.5f;
+    camera.far = 20;
+    ShadowOptions options;
+    options.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});
+    options.render.lighting = shading::default_lighting(options.light.direction);
+    options.casters = false;
+    const ShadowMap map = shadow_map_for(models, camera, 1, options);
+    perspective::ColourTarget unshadowed = perspective::colour_target(96, 96);
+    render(models, camera, options, map, unshadowed);
+    perspective::ColourTarget lesson07 = perspective::colour_target(96, 96);
+    normal_mapping::render(models, camera, options.render, lesson07);
+    int differing = 0, drawn = 0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) {
+            const rl::Rgba a = unshadowed.colour().get(x, y), b = lesson07.colour().get(x, y);
+            differing +=
+                std::abs(a.r - b.r) > 1 || std::abs(a.g - b.g) > 1 || std::abs(a.b - b.b) > 1;
+            drawn += a != rl::kBackground;
+        }
+    EXPECT_EQ(differing, 0);
+    EXPECT_GT(drawn, 96 * 96 / 4);
+    options.casters = true;  // and with them the crate shadows the floor
+    perspective::ColourTarget shadowed = perspective::colour_target(96, 96);
+    render(models, camera, options, shadow_map_for(models, camera, 1, options), shadowed);
+    EXPECT_NE(shadowed.colour(), unshadowed.colour());
+}
+
 // The shadow map's pass is capped in texels visited, whatever the map's
 // size (sized by the map alone, an 8192² map allowed 16 times the work of a
 // 2048² one). The floor's two triangles cover a map fitted to it twice over:
