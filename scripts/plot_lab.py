@@ -87,15 +87,41 @@ def plain_log_ticks(axis, low, high):
     axis.set_minor_formatter(NullFormatter())
 
 
-def spread_labels(figure, axes, labels, points):
+CLOSE = 14  # points nearer than this on the chart (pixels) share one label
+
+
+def merge_close_labels(labels, marks):
+    """Points too close to be told apart on the chart (an exact result shared
+    by several methods) get one label listing them all, one per line, at the
+    first of them; the others' labels are hidden. Returns the labels shown."""
+    clusters = []  # lists of indices, joined when any two members are close
+    for i, (x, y) in enumerate(marks):
+        near = [c for c in clusters
+                if any(math.hypot(x - marks[j][0], y - marks[j][1]) < CLOSE for j in c)]
+        merged = [i] + [j for c in near for j in c]
+        clusters = [c for c in clusters if c not in near] + [sorted(merged)]
+    shown = []
+    for cluster in sorted(clusters):
+        first = labels[cluster[0]]
+        if len(cluster) > 1:
+            first.set_text("\n".join(labels[j].get_text() for j in cluster))
+            for j in cluster[1:]:
+                labels[j].set_visible(False)
+        shown.append(first)
+    return shown
+
+
+def spread_labels(figure, axes, labels, points, avoid=()):
     """Moves each point label to the first of a few offsets where it overlaps
-    no label placed before it, no point and stays inside the axes."""
+    no label placed before it, no point, none of the `avoid` axes (an inset,
+    with its ticks) and stays inside the axes."""
     figure.canvas.draw()
     renderer = figure.canvas.get_renderer()
     inside = axes.get_window_extent(renderer)
     marks = [axes.transData.transform(p) for p in points]
     mark_boxes = [(x - 5, y - 5, x + 5, y + 5) for x, y in marks]
-    placed = []
+    placed = [(b.x0, b.y0, b.x1, b.y1) for b in (other.get_tightbbox(renderer) for other in avoid)]
+    labels = merge_close_labels(labels, marks)
     candidates = [(6, 4, "left"), (6, -12, "left"), (-6, 4, "right"), (-6, -12, "right"),
                   (6, 16, "left"), (-6, 16, "right"), (6, -24, "left"), (-6, -24, "right"),
                   (0, 28, "center"), (0, -36, "center")]
@@ -287,9 +313,10 @@ def points_and_spreads(rows, options):
     return points, [(number(r[low]), number(r[high])) for r in rows]
 
 
-def scatter_with_fronts(axes, rows, options, label, key, front_keys):
+def scatter_with_fronts(axes, rows, options, label, key, front_keys, labelled=None):
     """The rows as labelled points, coloured by group, each group's best
-    trade-offs circled and joined; their keys are added to front_keys."""
+    trade-offs circled and joined; their keys are added to front_keys. With
+    `labelled`, only the rows it accepts get a label."""
     groups = {}
     for row in rows:
         groups.setdefault(row[options.group] if options.group else "", []).append(row)
@@ -301,6 +328,8 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys):
                      label=f"{options.group} {group}" if options.group else None)
         shown = [c for c in label if c not in (options.group, options.panel)]
         for row, (x, y) in zip(members, points):
+            if labelled and not labelled(row):
+                continue
             labels.append(axes.annotate(" ".join(row[c] for c in shown), (x, y),
                                         textcoords="offset points", xytext=(6, 4),
                                         fontsize=7 if options.panel else 8))
@@ -317,6 +346,30 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys):
         axes.scatter([points[i][0] for i in front], [points[i][1] for i in front], s=140,
                      facecolors="none", edgecolors=colour, linewidths=1.5, zorder=4)
     return labels, all_points
+
+
+def in_zoom(row, options):
+    """Whether a row's point lies in the --zoom box."""
+    x0, x1, y0, y1 = options.zoom
+    x, y = number(row[options.x]), number(row[options.y])
+    return x is not None and y is not None and x0 <= x <= x1 and y0 <= y <= y1
+
+
+def zoom_inset(axes, rows, options, label, key, front_keys):
+    """The --zoom box's points again, in an inset of `axes` at --zoom-at
+    (axes fractions) on linear scales, with their labels: a cluster whose
+    labels cannot be told apart at the chart's scale. The box is outlined on
+    the chart and joined to the inset."""
+    inset = axes.inset_axes(options.zoom_at)
+    labels, points = scatter_with_fronts(inset, rows, options, label, key, front_keys,
+                                         labelled=lambda row: in_zoom(row, options))
+    x0, x1, y0, y1 = options.zoom
+    inset.set_xlim(x0, x1)
+    inset.set_ylim(y0, y1)
+    inset.tick_params(labelsize=7)
+    inset.grid(True, alpha=0.3)
+    axes.indicate_inset_zoom(inset, edgecolor="0.4")
+    return inset, labels, points
 
 
 def bars_with_fronts(axes, rows, options, label, key, front_keys):
@@ -381,9 +434,22 @@ def main():
                         help="draw each row as a bar of its time, its error written beside it "
                              "(for steps whose errors are mostly equal)")
     parser.add_argument("--y-short", default="error", help="with --bars: the error's name by each bar")
+    parser.add_argument("--zoom", metavar="X0,X1,Y0,Y1",
+                        help="draw the points in this box again, labelled, in an inset (a cluster)")
+    parser.add_argument("--zoom-at", metavar="LEFT,BOTTOM,WIDTH,HEIGHT", default="0.3,0.4,0.45,0.5",
+                        help="with --zoom: where the inset goes, in fractions of the chart")
     parser.add_argument("--xticks-at-data", action="store_true",
                         help="one x tick at each value the data has (sizes, distances)")
     options = parser.parse_args()
+    for name in ("zoom", "zoom_at"):
+        text = getattr(options, name)
+        if text:
+            values = [number(v) for v in text.split(",")]
+            if len(values) != 4 or None in values:
+                sys.exit(f"--{name.replace('_', '-')}: four numbers, comma-separated")
+            setattr(options, name, values)
+    if options.zoom and (options.panel or options.bars or options.series):
+        sys.exit("--zoom: only for a single scatter chart")
 
     import matplotlib
 
@@ -435,9 +501,17 @@ def main():
     front_keys = set()
     placements = []
     for axes, (panel, panel_rows) in zip(all_axes, panels.items()):
-        draw = bars_with_fronts if options.bars else scatter_with_fronts
-        labels, points = draw(axes, panel_rows, options, label, key, front_keys)
-        placements.append((axes, labels, points))
+        if options.zoom:  # the box's points are labelled in the inset only
+            labels, points = scatter_with_fronts(
+                axes, panel_rows, options, label, key, front_keys,
+                labelled=lambda row: not in_zoom(row, options))
+            inset, *inset_labels = zoom_inset(axes, panel_rows, options, label, key, front_keys)
+            placements.append((inset, *inset_labels, []))
+            placements.append((axes, labels, points, [inset]))
+        else:
+            draw = bars_with_fronts if options.bars else scatter_with_fronts
+            labels, points = draw(axes, panel_rows, options, label, key, front_keys)
+            placements.append((axes, labels, points, []))
         if options.panel:
             axes.set_title(f"{options.panel} {panel}", fontsize=9)
     if options.bars:
@@ -455,8 +529,8 @@ def main():
         all_axes[0].legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
 
     def place_labels():
-        for axes, labels, points in placements:
-            spread_labels(figure, axes, labels, points)
+        for axes, labels, points, avoid in placements:
+            spread_labels(figure, axes, labels, points, avoid)
 
     finish(figure, all_axes if options.panel else all_axes[0], options, rows, place_labels)
 

@@ -5,7 +5,8 @@ more accurate point beats it (issue 18: the marks were keyed on the label
 alone, and "affine, 8x8 cells" was marked best at every tilt). And a line
 chart refuses a line that passes twice through one x (issue 34: lesson 12's
 sizes joined three scenes into one zig-zag line when --panel was ignored),
-and draws one per panel when --panel splits them."""
+and draws one per panel when --panel splits them. A cluster given to --zoom
+is labelled in its inset, once."""
 import pathlib
 import subprocess
 import sys
@@ -61,5 +62,24 @@ with tempfile.TemporaryDirectory() as folder:
     svg = (folder / "lines.svg").read_text()
     if svg.count("scene a") != 1 or svg.count("scene b") != 1:
         sys.exit("--panel with --series: expected one small chart per scene")
+    # A cluster too tight to label at the chart's scale (issue 34: lesson 08's
+    # filters could not be matched to their dots): with --zoom its points are
+    # drawn again in an inset and labelled there only, once each; a point
+    # outside the box keeps its label on the chart.
+    csv.write_text("method,ms,error\n"
+                   "alpha,100,0.06\n" "beta,101,0.061\n" "gamma,102,0.059\n" "delta,103,0.062\n"
+                   "far away,500,5\n")
+    zoom = [sys.executable, str(plot), str(csv), "--x", "ms", "--y", "error", "--label", "method",
+            "--logy", "--svg", str(folder / "zoom.svg")]
+    subprocess.run(zoom + ["--zoom", "95,110,0.055,0.065"], check=True)
+    svg = (folder / "zoom.svg").read_text()
+    counts = {name: svg.count(f"<!-- {name} -->") for name in
+              ("alpha", "beta", "gamma", "delta", "far away")}
+    axes = svg.count('id="axes_')
+    if set(counts.values()) != {1} or axes != 2:
+        sys.exit(f"--zoom: labels {counts} (each once), {axes} axes (2)")
+    bad = subprocess.run(zoom + ["--zoom", "95,110,0.055"], capture_output=True, text=True)
+    if bad.returncode == 0 or "--zoom: four numbers" not in bad.stderr:
+        sys.exit(f"--zoom with three numbers was taken: {bad.returncode} {bad.stderr}")
 print("best trade-offs marked within each group and each panel, overlapping runs tied; "
-      "a line never joins two panels' rows")
+      "a line never joins two panels' rows; a zoomed cluster is labelled once, in its inset")
