@@ -38,7 +38,16 @@ rl::dvec3 radiance(const Sky& sky, rl::dvec3 d) {
     const double up = std::sqrt(std::max(d.y, 0.0));
     const rl::dvec3 air = sky.horizon * (1 - up) + sky.zenith * up;
     const double ground_share = 1 - smoothstep(-sky.horizon_band, 0.0, d.y);
-    rl::dvec3 out = air * (1 - ground_share) + sky.ground * ground_share;
+    rl::dvec3 ground = sky.ground;
+    if (sky.checker > 0 && d.y < 0) {
+        // Where the ray meets the plane one unit below: (x, z) / -y.
+        const double x = d.x / -d.y / sky.checker, z = d.z / -d.y / sky.checker;
+        const bool dark =
+            (static_cast<long long>(std::floor(x)) + static_cast<long long>(std::floor(z))) % 2 !=
+            0;
+        if (std::fabs(x) < 1e15 && std::fabs(z) < 1e15 && dark) ground = sky.ground_dark;
+    }
+    rl::dvec3 out = air * (1 - ground_share) + ground * ground_share;
     // The sun and its corona, above the horizon only.
     const double cos_angle = std::clamp(rl::dot(d, sky.sun_direction), -1.0, 1.0);
     const double degrees = std::acos(cos_angle) * 180 / std::numbers::pi;

@@ -28,6 +28,11 @@ struct Sky {
     rl::dvec3 zenith{0.18, 0.32, 0.75};
     rl::dvec3 horizon{0.95, 0.95, 1.0};
     rl::dvec3 ground{0.25, 0.2, 0.15};
+    // The ground as a checkerboard seen from one unit above it: squares of
+    // this side (0: plain), the dark ones this colour. A mirror's image of
+    // it shows at once how the mirror bends its view.
+    double checker = 1.0;
+    rl::dvec3 ground_dark{0.09, 0.07, 0.05};
     double horizon_band = 0.02;  // sin(elevation) over which the ground fades into the sky
 };
 

@@ -154,9 +154,11 @@ TEST(LatLong, TheSeamWrapsAndThePolesAgree) {
 TEST(Sky, ZenithHorizonGroundAndSun) {
     const Sky sky = default_sky();
     const rl::dvec3 zenith = radiance(sky, {0, 1, 0});
-    EXPECT_GT(zenith.z, zenith.x);  // blue above
-    const rl::dvec3 ground = radiance(sky, {0.3, -0.8, 0.2});
-    EXPECT_EQ(ground.x, sky.ground.x);  // below the band: the ground alone
+    EXPECT_GT(zenith.z, zenith.x);                             // blue above
+    const rl::dvec3 ground = radiance(sky, {0.3, -0.8, 0.2});  // the square (0, 0): light
+    EXPECT_EQ(ground.x, sky.ground.x);                         // below the band: the ground alone
+    const rl::dvec3 next = radiance(sky, {1.2, -0.8, 0.2});    // (1.5, 0.25): the square (1, 0)
+    EXPECT_EQ(next.x, sky.ground_dark.x);
     const rl::dvec3 sun = radiance(sky, sky.sun_direction);
     EXPECT_GT(sun.x, sky.sun.x);  // the disc, plus the corona and the sky under it
     EXPECT_EQ(radiance(sky, {0, 0, 0}).x, 0.0);

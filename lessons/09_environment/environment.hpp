@@ -1,0 +1,70 @@
+// The environment a render reads: an analytic sky or studio, or a Radiance
+// .hdr file (a lat-long image), stored as a cube map or a lat-long map and
+// read through one filter.
+//
+//   const environment::Environment env = environment::make_environment(
+//       {.source = "sky", .layout = environment::Layout::cube, .size = 256}, warnings);
+//   const rl::vec3 light = env.sample({0, 1, 0});
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cube_map.hpp"
+#include "latlong_map.hpp"
+
+namespace environment {
+
+enum class Layout { cube, latlong };
+inline constexpr std::array<rl::Named<Layout>, 2> kLayoutNames = {
+    {{Layout::cube, "cube"}, {Layout::latlong, "latlong"}}};
+inline constexpr std::array<Layout, 2> kLayouts = rl::values_of(kLayoutNames);
+inline const char* name(Layout value) {
+    return rl::name_in(kLayoutNames, value);
+}
+
+struct EnvironmentOptions {
+    std::string source = "sky";  // "sky", "studio" or the path of a lat-long .hdr
+    Layout layout = Layout::cube;
+    int size = 256;  // a cube face's side, or a lat-long map's height (its width is twice that)
+    MapFilter filter = MapFilter::seamless;
+};
+
+class Environment {
+  public:
+    Environment(CubeMap cube, MapFilter filter) : cube_(std::move(cube)), filter_(filter) {}
+    Environment(LatLongMap latlong, MapFilter filter)
+        : latlong_(std::move(latlong)), filter_(filter) {}
+    Layout layout() const { return cube_ ? Layout::cube : Layout::latlong; }
+    MapFilter filter() const { return filter_; }
+    // The radiance arriving from `direction` (any length), at mip level `level`.
+    rl::vec3 sample(rl::vec3 direction, float level = 0) const {
+        return cube_ ? cube_->sample(direction, filter_, level)
+                     : latlong_->sample(direction, filter_, level);
+    }
+    const CubeMap* cube() const { return cube_ ? &*cube_ : nullptr; }
+    const LatLongMap* latlong() const { return latlong_ ? &*latlong_ : nullptr; }
+
+  private:
+    std::optional<CubeMap> cube_;
+    std::optional<LatLongMap> latlong_;
+    MapFilter filter_;
+};
+
+// The largest map a program builds: a cube face or a lat-long height of
+// 2048 texels (six faces of 2048² float texels: 384 MiB with their mips).
+inline constexpr int kMaxMapSize = 2048;
+
+// The brightest texel a loaded map may hold: a billion times the sky (the
+// real sun is about 10^5 times a clear sky's radiance).
+inline constexpr float kMaxRadiance = 1e9f;
+
+// Builds the environment the options ask for. A .hdr file is read as a
+// lat-long image; as a cube map each face texel reads it bilinearly. Its
+// texels must be 0 to kMaxRadiance: others (a broken file) are set to 0
+// with a warning naming how many. Throws std::invalid_argument for a size
+// outside 1..kMaxMapSize, rl::FileError for a file that cannot be read.
+Environment make_environment(const EnvironmentOptions& options, std::vector<std::string>& warnings);
+
+}  // namespace environment

@@ -1,0 +1,87 @@
+// Lesson 09: light from the whole environment. The models (lesson 07's, with
+// their normal maps) as mirrors or glass, lit by a sky, a studio or a
+// Radiance .hdr file stored as a cube or a lat-long map, the sky behind them;
+// linear HDR light, then the exposure, a tone map and sRGB. Read
+// docs/09_environment.md beside it.
+#include <chrono>
+#include <cstdio>
+
+#include "05_perspective/view_cli.hpp"
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "scene.hpp"
+#include "tone_map.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Lesson 09, environment: mirrors and glass lit by a sky, a studio or an .hdr file, as a "
+        "cube or a lat-long map, with the sky behind them, tone mapped."};
+    rl::ImageOptions image_options{"09_environment.tga"};
+    perspective::ViewOptions view;
+    environment::EnvironmentOptions env_options;
+    environment::RenderOptions options;
+    environment::Exposure exposure;
+    normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
+    perspective::add_view_options(app, view, "the globe and the torus from obj/");
+    app.remove_option(app.get_option("--light"));  // the environment is the light here
+    rl::add_image_options(app, image_options);
+    app.add_option("--environment", env_options.source,
+                   "The light around the scene: sky, studio, or the path of a lat-long .hdr file")
+        ->capture_default_str();
+    rl::add_method_option(app, "--map", env_options.layout, environment::kLayouts,
+                          "How the environment is stored");
+    app.add_option("--map-size", env_options.size,
+                   "A cube face's side, or a lat-long map's height, in texels (1 to " +
+                       std::to_string(environment::kMaxMapSize) + ")")
+        ->capture_default_str();
+    rl::add_method_option(app, "--filter", env_options.filter, environment::kMapFilters,
+                          "How the map is read between texels");
+    rl::add_method_option(app, "--material", options.material, environment::kMaterials,
+                          "What the models are made of");
+    rl::add_method_option(app, "--tone-map", exposure.curve, environment::kToneMaps,
+                          "How light above 1 is brought into the image");
+    app.add_option("--exposure", exposure.stops, "Exposure in stops: the light times 2^stops")
+        ->capture_default_str()
+        ->check(rl::finite_number(-20, 20));
+    rl::add_method_option(app, "--normal-map", options.normal_map, normal_mapping::kNormalMaps,
+                          "Normal map to use (lesson 07)");
+    rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
+                          "Tangent frames of the --model files (lesson 07)");
+    bool no_skybox = false;
+    app.add_flag("--no-skybox", no_skybox, "Leave the background black instead of the sky");
+    CLI11_PARSE(app, argc, argv);
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
+
+    return rl::guarded_main("09_environment", [&] {
+        rl::check_image_output(output);
+        options.skybox = !no_skybox;
+        std::vector<std::string> warnings;
+        const auto start = std::chrono::steady_clock::now();
+        const environment::Environment env = environment::make_environment(env_options, warnings);
+        const auto built = std::chrono::steady_clock::now();
+        const auto [models, camera] =
+            environment::load_scene(view, tangents, width, height, warnings);
+        rl::print_warnings("09_environment", warnings);
+        if (options.map_filter == textures::Filter::trilinear)
+            normal_mapping::build_mip_levels(models);
+        const auto drawing = std::chrono::steady_clock::now();
+        environment::LightTarget frame = environment::light_target(width, height);
+        const perspective::PipelineCounts counts =
+            environment::render(models, camera, env, options, frame);
+        const rl::Image picture = environment::tone_mapped(frame.colour(), exposure);
+        const auto done = std::chrono::steady_clock::now();
+        rl::save_image(output, picture);
+        const std::chrono::duration<double, std::milli> map_ms = built - start,
+                                                        frame_ms = done - drawing;
+        std::printf(
+            "%zu models: %zu faces, %zu fragments shaded, %s; %s environment as a %s map (%d, %s "
+            "filter) built in %.1f ms; frame (with the sky and the %s tone map) in %.1f ms; into "
+            "%s\n",
+            models.size(), counts.faces, counts.fragments, environment::name(options.material),
+            env_options.source.c_str(), environment::name(env.layout()), env_options.size,
+            environment::name(env.filter()), map_ms.count(), environment::name(exposure.curve),
+            frame_ms.count(), output.c_str());
+        return 0;
+    });
+}

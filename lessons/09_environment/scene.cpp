@@ -1,0 +1,99 @@
+#include "scene.hpp"
+
+#include <cmath>
+
+#include "rasterlab/texture_files.hpp"
+#include "rasterlab/transform.hpp"
+
+namespace environment {
+
+std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>& warnings) {
+    using normal_mapping::TangentMethod;
+    std::vector<normal_mapping::MappedModel> models;
+    // The globe (radius 1) on the left; the torus (ring 0.62, tube 0.3,
+    // about z) on the right, turned a little towards the sky above it.
+    models.push_back(normal_mapping::load_mapped_model(
+        rl::project_model("globe"),
+        rl::compose({.translation = {-0.75f, 0, 0}, .scale = {0.8f, 0.8f, 0.8f}}),
+        TangentMethod::split, warnings));
+    models.push_back(normal_mapping::load_mapped_model(
+        rl::project_model("torus"),
+        rl::compose({.translation = {0.85f, 0, 0}, .rotation = rl::axis_angle({1, 0, 0}, -25)}),
+        TangentMethod::split, warnings));
+    return models;
+}
+
+perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+    int height, std::vector<std::string>& warnings) {
+    const rl::TexelBudget budget;  // for the textures of all the models together
+    perspective::ViewedScene<normal_mapping::MappedModel> scene;
+    perspective::ViewOptions framed = view;
+    if (view.models.empty()) {
+        scene.models = default_scene(warnings);
+        if (view.eye.empty()) framed.eye = {0.3f, 0.35f, 3.8f};
+        if (view.target.empty()) framed.target = {0, 0, 0};
+    }
+    for (const std::string& path : view.models)  // as stored: the identity model matrix
+        scene.models.push_back(
+            normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
+    scene.camera = perspective::view_camera(framed, normal_mapping::scene_box(scene.models), width,
+                                            height, warnings);
+    return scene;
+}
+
+rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x, float y) {
+    // The camera's frame: forward, right and up; the screen one unit in
+    // front of the eye spans tan(fov / 2) up and down, times the aspect
+    // ratio across.
+    const rl::vec3 forward = rl::normalize(camera.target - camera.eye);
+    const rl::vec3 right = rl::normalize(rl::cross(forward, camera.up));
+    const rl::vec3 up = rl::cross(right, forward);
+    const float half_height = std::tan(0.5f * rl::radians(camera.fov_y));
+    const float half_width = half_height * static_cast<float>(width) / static_cast<float>(height);
+    const float sx = (2 * x / static_cast<float>(width) - 1) * half_width;
+    const float sy = (2 * y / static_cast<float>(height) - 1) * half_height;
+    return rl::normalize(forward + right * sx + up * sy);
+}
+
+// [doc:skybox]
+void draw_skybox(const Environment& environment, const perspective::Camera& camera,
+                 LightTarget& frame) {
+    const rl::FloatImage* depth = frame.depth();
+    const float clear = frame.depth_state.clear;
+    for (int y = 0; y < frame.height(); ++y)
+        for (int x = 0; x < frame.width(); ++x) {
+            if (depth && depth->get(x, y) != clear) continue;  // a model is there
+            frame.colour().set(x, y,
+                               environment.sample(pixel_ray(camera, frame.width(), frame.height(),
+                                                            x + 0.5f, y + 0.5f)));
+        }
+}
+// [/doc:skybox]
+
+perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                   const perspective::Camera& camera,
+                                   const Environment& environment, const RenderOptions& options,
+                                   LightTarget& frame) {
+    const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
+    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    normal_mapping::RenderOptions surfaces;
+    surfaces.normal_map = options.normal_map;
+    surfaces.filter = options.map_filter;
+    textures::SamplerState sampler;
+    sampler.filter = options.map_filter;
+    perspective::PipelineCounts counts;
+    for (const normal_mapping::MappedModel& m : models) {
+        const std::optional<shading::Placed> p = shading::place(
+            m.lit, view_projection, camera, surfaces.lighting, sampler, true, counts);
+        if (!p) continue;
+        counts += perspective::draw(p->surface,
+                                    EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces),
+                                                      environment, options.material},
+                                    frame, options.pipeline);
+    }
+    if (options.skybox) draw_skybox(environment, camera, frame);
+    return counts;
+}
+
+}  // namespace environment

@@ -1,0 +1,59 @@
+// Lesson 09's render: the models with their normal maps (lesson 07) lit by
+// the environment alone, into a float target of linear light, then the
+// sky behind them.
+//
+//   auto scene = environment::load_scene(view, TangentMethod::split, 800, 800, warnings);
+//   environment::LightTarget frame = environment::light_target(800, 800);
+//   environment::render(scene.models, scene.camera, env, {}, frame);
+#pragma once
+
+#include "05_perspective/view_options.hpp"
+#include "07_normal_mapping/scene.hpp"
+#include "environment_shader.hpp"
+
+namespace environment {
+
+// The frame of this lesson: linear light in floats (black where nothing is
+// drawn), and depth.
+using LightTarget = perspective::RenderTarget<rl::vec3>;
+inline LightTarget light_target(int width, int height) {
+    return LightTarget(width, height, {}, rl::vec3{0, 0, 0});
+}
+
+// The default scene: the globe and the torus side by side, in the open.
+std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>& warnings);
+
+// The default scene (or the view's models, as stored) and its camera; for
+// the default scene without --eye, a view from just above the horizon, so
+// that the sky, the ground and their reflections all show.
+perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+    int height, std::vector<std::string>& warnings);
+
+struct RenderOptions {
+    Material material = Material::mirror;
+    normal_mapping::NormalMap normal_map = normal_mapping::NormalMap::tangent;
+    textures::Filter map_filter = textures::Filter::trilinear;  // the normal maps'
+    bool skybox = true;
+    perspective::PipelineOptions pipeline;
+};
+
+// The direction (unit, world space) of the ray from the eye through the
+// point (x, y) of a width x height image (pixel centres at i + 0.5): the
+// inverse of what the camera's projection does to a point.
+rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x, float y);
+
+// The sky behind the models: every pixel the models left at the far plane
+// (its depth still the clear value) gets the environment's radiance along
+// the ray through its centre. Drawn after the models, so each pixel is
+// looked up once, never for a pixel a model covers.
+void draw_skybox(const Environment& environment, const perspective::Camera& camera,
+                 LightTarget& frame);
+
+// The models, then (if options.skybox) the sky.
+perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                   const perspective::Camera& camera,
+                                   const Environment& environment, const RenderOptions& options,
+                                   LightTarget& frame);
+
+}  // namespace environment

@@ -1,0 +1,43 @@
+// From light to bytes: a frame of linear HDR values (any size, the sun
+// thousands of times the sky) scaled by the exposure, squeezed into 0..1 by
+// a tone map, then encoded to sRGB bytes by lesson 06. Derivation and
+// pictures: docs/09_environment.md#hdr-and-tone-mapping.
+//
+//   environment::LightTarget hdr = environment::light_target(800, 600);  // scene.hpp
+//   const rl::Image picture = environment::tone_mapped(hdr.colour(), {environment::ToneMap::aces,
+//   0});
+#pragma once
+
+#include <array>
+
+#include "06_shading/colour.hpp"
+#include "rasterlab/image.hpp"
+#include "rasterlab/named_enum.hpp"
+
+namespace environment {
+
+// clamp: values above 1 cut to 1 (a bright sky goes flat white);
+// reinhard: c / (1 + c), never reaching 1; aces: the curve fitted to the
+// film industry's ACES reference (Narkowicz, 2015), a toe and a shoulder.
+enum class ToneMap { clamp, reinhard, aces };
+inline constexpr std::array<rl::Named<ToneMap>, 3> kToneMapNames = {
+    {{ToneMap::clamp, "clamp"}, {ToneMap::reinhard, "reinhard"}, {ToneMap::aces, "aces"}}};
+inline constexpr std::array<ToneMap, 3> kToneMaps = rl::values_of(kToneMapNames);
+inline const char* name(ToneMap value) {
+    return rl::name_in(kToneMapNames, value);
+}
+
+struct Exposure {
+    ToneMap curve = ToneMap::aces;
+    float stops = 0;  // the light is scaled by 2^stops first
+};
+
+// One value through the exposure and the curve: 0..1. NaN, negative or
+// infinite light gives 0 (an infinite value is not a colour).
+float tone_map(float light, const Exposure& exposure);
+rl::vec3 tone_map(rl::vec3 light, const Exposure& exposure);
+
+// The frame as sRGB bytes (alpha 255).
+rl::Image tone_mapped(const rl::Grid<rl::vec3>& light, const Exposure& exposure);
+
+}  // namespace environment

@@ -1,0 +1,160 @@
+// Lesson 09's optics, tone maps, sky pass and environments: Snell's law and
+// total internal reflection, Fresnel's ends, the tone maps' shapes, the
+// sky behind the models only, and broken .hdr files.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "../../unit/temp_dir.hpp"
+#include "09_environment/optics.hpp"
+#include "09_environment/scene.hpp"
+#include "09_environment/tone_map.hpp"
+#include "rasterlab/file_io.hpp"
+#include "rasterlab/image_io.hpp"
+
+namespace {
+
+using namespace environment;
+
+TEST(Optics, ReflectionKeepsTheAngleAndFlipsTheNormalPart) {
+    const rl::vec3 n{0, 1, 0};
+    const rl::vec3 d = rl::normalize(rl::vec3{1, -1, 0});
+    const rl::vec3 r = reflect(d, n);
+    EXPECT_NEAR(r.x, d.x, 1e-6f);
+    EXPECT_NEAR(r.y, -d.y, 1e-6f);
+}
+
+// Snell: n1 sin(theta_i) = n2 sin(theta_t); from glass to air past the
+// critical angle (asin(1 / 1.5) = 41.8 degrees) nothing gets through.
+TEST(Optics, SnellsLawAndTotalInternalReflection) {
+    const rl::vec3 n{0, 1, 0};
+    for (float degrees : {0.0f, 20.0f, 45.0f, 80.0f}) {
+        const float a = rl::radians(degrees);
+        const rl::vec3 d{std::sin(a), -std::cos(a), 0};
+        const std::optional<rl::vec3> t = refract(d, n, 1 / 1.5f);
+        ASSERT_TRUE(t);
+        EXPECT_NEAR(rl::length(*t), 1, 1e-5f);
+        EXPECT_NEAR(1.5f * t->x, d.x, 1e-5f) << degrees;  // sin(theta_t) * 1.5 = sin(theta_i)
+        EXPECT_LT(t->y, 0);                               // on through the surface
+    }
+    const float critical = std::asin(1 / 1.5f);
+    const rl::vec3 below{std::sin(critical - 0.01f), -std::cos(critical - 0.01f), 0};
+    const rl::vec3 beyond{std::sin(critical + 0.01f), -std::cos(critical + 0.01f), 0};
+    EXPECT_TRUE(refract(below, n, 1.5f));
+    EXPECT_FALSE(refract(beyond, n, 1.5f));
+}
+
+TEST(Optics, FresnelFromFourPercentHeadOnToAllAtGrazing) {
+    EXPECT_NEAR(reflectance_at_normal(1.5f), 0.04f, 1e-6f);
+    EXPECT_NEAR(schlick(1, 0.04f), 0.04f, 1e-7f);
+    EXPECT_NEAR(schlick(0, 0.04f), 1.0f, 1e-7f);
+    float previous = 0;
+    for (int k = 10; k >= 0; --k) {  // rising as the view grazes
+        const float f = schlick(k / 10.0f, 0.04f);
+        EXPECT_GE(f, previous);
+        previous = f;
+    }
+}
+
+TEST(ToneMap, ShapesExposureAndBrokenLight) {
+    EXPECT_EQ(tone_map(4.0f, {ToneMap::clamp, 0}), 1.0f);
+    EXPECT_NEAR(tone_map(1.0f, {ToneMap::reinhard, 0}), 0.5f, 1e-7f);
+    EXPECT_NEAR(tone_map(0.5f, {ToneMap::reinhard, 1}), 0.5f, 1e-7f);  // one stop up: 0.5 -> 1
+    EXPECT_LT(tone_map(1e6f, {ToneMap::reinhard, 0}), 1.0f);
+    EXPECT_EQ(tone_map(1e6f, {ToneMap::aces, 0}), 1.0f);
+    float previous = -1;
+    for (float light = 0; light < 20; light += 0.25f) {  // every curve rises
+        const float v = tone_map(light, {ToneMap::aces, 0});
+        EXPECT_GE(v, previous);
+        previous = v;
+    }
+    for (float bad : {NAN, -1.0f, INFINITY})
+        for (ToneMap curve : kToneMaps) EXPECT_EQ(tone_map(bad, {curve, 0}), 0.0f);
+}
+
+// The ray through a pixel goes where the camera's projection sends it: a
+// point along it projects back onto that pixel's centre.
+TEST(Skybox, ThePixelRayIsTheProjectionsInverse) {
+    perspective::Camera camera;
+    camera.eye = {0.3f, 0.35f, 3.8f};
+    camera.target = {0.1f, -0.2f, 0};
+    camera.fov_y = 50;
+    const int width = 160, height = 90;
+    const rl::mat4 vp = perspective::view_projection(camera, float(width) / height);
+    for (auto [x, y] : {std::pair{0.5f, 0.5f}, {80.0f, 45.0f}, {159.5f, 10.5f}, {33.5f, 89.5f}}) {
+        const rl::vec3 p = camera.eye + pixel_ray(camera, width, height, x, y) * 5.0f;
+        const rl::vec4 clip = vp * rl::vec4{p.x, p.y, p.z, 1};
+        EXPECT_NEAR((clip.x / clip.w + 1) / 2 * width, x, 2e-3f);
+        EXPECT_NEAR((clip.y / clip.w + 1) / 2 * height, y, 2e-3f);
+    }
+}
+
+// The sky fills exactly the pixels no model covers: a model's pixels keep
+// their colour, and every other pixel is the environment along its ray.
+TEST(Skybox, FillsOnlyWhatTheModelsLeft) {
+    std::vector<std::string> warnings;
+    const Environment env = make_environment({.size = 16}, warnings);
+    perspective::ViewOptions view;
+    const auto scene = load_scene(view, normal_mapping::TangentMethod::split, 64, 48, warnings);
+    LightTarget frame = light_target(64, 48);
+    RenderOptions options;
+    options.skybox = false;
+    render(scene.models, scene.camera, env, options, frame);
+    const LightTarget models_only = frame;
+    draw_skybox(env, scene.camera, frame);
+    int sky = 0, models = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 64; ++x) {
+            if (frame.depth()->get(x, y) != frame.depth_state.clear) {
+                ++models;
+                EXPECT_EQ(frame.colour().get(x, y), models_only.colour().get(x, y));
+            } else {
+                ++sky;
+                const rl::vec3 expected =
+                    env.sample(pixel_ray(scene.camera, 64, 48, x + 0.5f, y + 0.5f));
+                EXPECT_EQ(frame.colour().get(x, y), expected);
+            }
+        }
+    EXPECT_GT(models, 300);
+    EXPECT_GT(sky, 1000);
+}
+
+TEST(Environments, SizesOutsideTheCapAreRefused) {
+    std::vector<std::string> warnings;
+    EXPECT_THROW(make_environment({.size = 0}, warnings), std::invalid_argument);
+    EXPECT_THROW(make_environment({.size = kMaxMapSize + 1}, warnings), std::invalid_argument);
+}
+
+// A .hdr with texels beyond any real light (RGBE's largest exponents) is
+// read with those texels set to 0 and a warning that counts them; the rest
+// of the map stays as stored.
+TEST(Environments, AnHdrWithAbsurdTexelsIsCleanedWithAWarning) {
+    const rl_test::TempDir dir;
+    rl::HdrImage image(8, 4, rl::vec4{0.5f, 0.5f, 0.5f, 1});
+    image.set(2, 1, rl::vec4{1e30f, 0.5f, 0.5f, 1});
+    image.set(5, 3, rl::vec4{0.5f, 3e37f, 0.5f, 1});
+    const std::filesystem::path path = dir.path() / "broken.hdr";
+    rl_test::write_bytes(path, rl::encode_hdr(path, image));
+    std::vector<std::string> warnings;
+    const Environment env =
+        make_environment({.source = path.string(), .layout = Layout::latlong, .size = 4}, warnings);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_NE(warnings[0].find("2 texels were negative, not a number or above"), std::string::npos)
+        << warnings[0];
+    const rl::HdrImage& stored = env.latlong()->map().level(0);
+    EXPECT_EQ(stored.get(2, 1).x, 0.0f);
+    EXPECT_NEAR(stored.get(0, 0).x, 0.5f, 0.01f);
+}
+
+TEST(Environments, AMissingHdrIsAFileErrorNamingIt) {
+    std::vector<std::string> warnings;
+    try {
+        make_environment({.source = "/no/such/sky.hdr"}, warnings);
+        FAIL() << "no error";
+    } catch (const rl::FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("/no/such/sky.hdr"), std::string::npos);
+    }
+}
+
+}  // namespace
