@@ -87,28 +87,40 @@ def plain_log_ticks(axis, low, high):
     axis.set_minor_formatter(NullFormatter())
 
 
-CLOSE = 14  # points nearer than this on the chart (pixels) share one label
+CLOSE = 24  # points nearer than this on the chart (pixels) share one label
 
 
-def merge_close_labels(labels, marks):
+LEADER = dict(arrowstyle="-", color="0.45", lw=0.6, shrinkA=1, shrinkB=4)
+
+
+def merge_close_labels(axes, labels, marks):
     """Points too close to be told apart on the chart (an exact result shared
-    by several methods) get one label listing them all, one per line, at the
-    first of them; the others' labels are hidden. Returns the labels shown."""
+    by several methods) get one label listing them from left to right, one
+    per line, tied to the middle of the group by a thin line; their own
+    labels are hidden. Returns the labels shown, and the marks they name."""
     clusters = []  # lists of indices, joined when any two members are close
     for i, (x, y) in enumerate(marks):
         near = [c for c in clusters
                 if any(math.hypot(x - marks[j][0], y - marks[j][1]) < CLOSE for j in c)]
         merged = [i] + [j for c in near for j in c]
         clusters = [c for c in clusters if c not in near] + [sorted(merged)]
-    shown = []
+    shown, anchors = [], []
     for cluster in sorted(clusters):
-        first = labels[cluster[0]]
-        if len(cluster) > 1:
-            first.set_text("\n".join(labels[j].get_text() for j in cluster))
-            for j in cluster[1:]:
-                labels[j].set_visible(False)
-        shown.append(first)
-    return shown
+        if len(cluster) == 1:
+            shown.append(labels[cluster[0]])
+            anchors.append(marks[cluster[0]])
+            continue
+        names = [labels[j].get_text() for j in sorted(cluster, key=lambda j: marks[j][0])]
+        middle = (sum(marks[j][0] for j in cluster) / len(cluster),
+                  sum(marks[j][1] for j in cluster) / len(cluster))
+        for j in cluster:
+            labels[j].set_visible(False)
+        shown.append(axes.annotate("left to right:\n" + "\n".join(names),
+                                   axes.transData.inverted().transform(middle),
+                                   textcoords="offset points", xytext=(6, 4),
+                                   fontsize=labels[cluster[0]].get_fontsize(), arrowprops=LEADER))
+        anchors.append(middle)
+    return shown, anchors
 
 
 def spread_labels(figure, axes, labels, points, avoid=()):
@@ -121,24 +133,31 @@ def spread_labels(figure, axes, labels, points, avoid=()):
     marks = [axes.transData.transform(p) for p in points]
     mark_boxes = [(x - 5, y - 5, x + 5, y + 5) for x, y in marks]
     placed = [(b.x0, b.y0, b.x1, b.y1) for b in (other.get_tightbbox(renderer) for other in avoid)]
-    labels = merge_close_labels(labels, marks)
+    labels, anchors = merge_close_labels(axes, labels, marks)
+    lists = {id(label) for label in labels if label.get_text().startswith("left to right:")}
     candidates = [(6, 4, "left"), (6, -12, "left"), (-6, 4, "right"), (-6, -12, "right"),
                   (6, 16, "left"), (-6, 16, "right"), (6, -24, "left"), (-6, -24, "right"),
-                  (0, 28, "center"), (0, -36, "center")]
+                  (0, 28, "center"), (0, -36, "center"),
+                  (18, 30, "left"), (-18, 30, "right"), (18, -42, "left"), (-18, -42, "right"),
+                  (30, 4, "left"), (-30, 4, "right")]
+    NEAR = 10  # the first ten sit beside their point; the others get a leader line
 
     def overlaps(a, b):
         return not (a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1])
 
     for label in labels:
         best, best_score = None, None
-        for dx, dy, align in candidates:
+        # A list of several points goes a little apart, above or below them,
+        # where its leader line shows.
+        order = candidates[NEAR:] + candidates[:NEAR] if id(label) in lists else candidates
+        for dx, dy, align in order:
             label.set_position((dx, dy))
             label.set_horizontalalignment(align)
             extent = label.get_window_extent(renderer)
             box = (extent.x0, extent.y0, extent.x1, extent.y1)
             score = sum(overlaps(box, other) for other in placed + mark_boxes)
             if box[0] < inside.x0 or box[2] > inside.x1 or box[1] < inside.y0 or box[3] > inside.y1:
-                score += 0.5
+                score += 1.5  # worse than touching one label: a label off the chart is lost
             if best_score is None or score < best_score:
                 best, best_score = (dx, dy, align, box), score
             if score == 0:
@@ -146,6 +165,8 @@ def spread_labels(figure, axes, labels, points, avoid=()):
         dx, dy, align, box = best
         label.set_position((dx, dy))
         label.set_horizontalalignment(align)
+        if candidates.index((dx, dy, align)) >= NEAR and label.arrow_patch is not None:
+            label.arrow_patch.set_visible(True)  # set apart: tied to its point
         placed.append(box)
 
 
@@ -332,7 +353,8 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys, labelled=No
                 continue
             labels.append(axes.annotate(" ".join(row[c] for c in shown), (x, y),
                                         textcoords="offset points", xytext=(6, 4),
-                                        fontsize=7 if options.panel else 8))
+                                        fontsize=7 if options.panel else 8, arrowprops=LEADER))
+            labels[-1].arrow_patch.set_visible(False)  # shown if the label is set apart
             all_points.append((x, y))
         if spreads:  # each point's fastest and slowest run, drawn as a bar
             axes.errorbar([p[0] for p in points], [p[1] for p in points],

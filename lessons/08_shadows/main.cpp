@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
     rl::add_method_option(app, "--map-faces", map_faces, shadows::kMapFaces,
                           "Faces stored in the map: those facing the light, or those facing away");
     rl::add_method_option(app, "--show", show, shadows::kShows,
-                          "Write the image, or the shadow map's depth as a picture");
+                          "Write the image, the shadow map's depth as a picture, or the image with "
+                          "nothing in the map (no shadows)");
     rl::add_method_option(app, "--normal-map", options.render.normal_map,
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,

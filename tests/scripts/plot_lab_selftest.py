@@ -6,7 +6,8 @@ alone, and "affine, 8x8 cells" was marked best at every tilt). And a line
 chart refuses a line that passes twice through one x (issue 34: lesson 12's
 sizes joined three scenes into one zig-zag line when --panel was ignored),
 and draws one per panel when --panel splits them. A cluster given to --zoom
-is labelled in its inset, once."""
+is labelled in its inset, once; points too close to tell apart share one
+label that lists them left to right."""
 import pathlib
 import subprocess
 import sys
@@ -81,5 +82,18 @@ with tempfile.TemporaryDirectory() as folder:
     bad = subprocess.run(zoom + ["--zoom", "95,110,0.055"], capture_output=True, text=True)
     if bad.returncode == 0 or "--zoom: four numbers" not in bad.stderr:
         sys.exit(f"--zoom with three numbers was taken: {bad.returncode} {bad.stderr}")
+    # Points too close to tell apart on the chart (issue 34: lesson 05's tilt 0,
+    # seven exact methods on one spot) share one label listing them left to
+    # right, tied to them by a line; a point apart keeps its own.
+    csv.write_text("method,ms,error\n"
+                   "one,10,1\n" "two,10.1,1.01\n" "three,10.05,0.99\n" "apart,80,30\n")
+    subprocess.run([sys.executable, str(plot), str(csv), "--x", "ms", "--y", "error", "--label",
+                    "method", "--logx", "--logy", "--svg", str(folder / "close.svg")], check=True)
+    svg = (folder / "close.svg").read_text()
+    lines = [line.strip() for line in svg.splitlines() if line.strip().startswith("<!-- ")]
+    listed = lines[lines.index("<!-- left to right: -->") + 1:][:3] if "<!-- left to right: -->" in lines else []
+    if listed != ["<!-- one -->", "<!-- three -->", "<!-- two -->"] or svg.count("<!-- apart -->") != 1:
+        sys.exit(f"close points: expected one list 'one, three, two' (left to right) and 'apart' "
+                 f"alone, got {listed}")
 print("best trade-offs marked within each group and each panel, overlapping runs tied; "
       "a line never joins two panels' rows; a zoomed cluster is labelled once, in its inset")
