@@ -1,6 +1,7 @@
 #include "environment.hpp"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "rasterlab/image_io.hpp"
@@ -36,6 +37,15 @@ rl::HdrImage cleaned(rl::HdrImage image, const std::string& path,
 
 }  // namespace
 
+double Environment::texel_radians() const {
+    return cube_ ? 0.5 * std::numbers::pi / cube_->size() : std::numbers::pi / latlong_->height();
+}
+
+float Environment::level_for(double radians) const {
+    const double level = std::log2(radians / texel_radians());
+    return level > 0 && std::isfinite(level) ? static_cast<float>(level) : 0.0f;
+}
+
 Environment make_environment(const EnvironmentOptions& options,
                              std::vector<std::string>& warnings) {
     if (options.size < 1 || options.size > kMaxMapSize)
@@ -43,9 +53,10 @@ Environment make_environment(const EnvironmentOptions& options,
                                     " is outside 1 to " + std::to_string(kMaxMapSize));
     if (options.source == "sky" || options.source == "studio") {
         const Analytic which = options.source == "sky" ? Analytic::sky : Analytic::studio;
+        const int samples = texel_samples(options.size);
         if (options.layout == Layout::cube)
-            return Environment(cube_map(which, options.size), options.filter);
-        return Environment(latlong_map(which, options.size), options.filter);
+            return Environment(cube_map(which, options.size, samples), options.filter);
+        return Environment(latlong_map(which, options.size, samples), options.filter);
     }
     LatLongMap file(cleaned(rl::load_hdr_image(options.source), options.source, warnings));
     if (options.layout == Layout::latlong) return Environment(std::move(file), options.filter);

@@ -42,18 +42,19 @@ perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     return scene;
 }
 
-rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x, float y) {
-    // The camera's frame: forward, right and up; the screen one unit in
-    // front of the eye spans tan(fov / 2) up and down, times the aspect
-    // ratio across.
-    const rl::vec3 forward = rl::normalize(camera.target - camera.eye);
-    const rl::vec3 right = rl::normalize(rl::cross(forward, camera.up));
-    const rl::vec3 up = rl::cross(right, forward);
+PixelRays::PixelRays(const perspective::Camera& camera, int width, int height)
+    : width_(static_cast<float>(width)), height_(static_cast<float>(height)) {
+    // The screen one unit in front of the eye spans tan(fov / 2) up and
+    // down, times the aspect ratio across.
+    forward_ = rl::normalize(camera.target - camera.eye);
+    const rl::vec3 right = rl::normalize(rl::cross(forward_, camera.up));
     const float half_height = std::tan(0.5f * rl::radians(camera.fov_y));
-    const float half_width = half_height * static_cast<float>(width) / static_cast<float>(height);
-    const float sx = (2 * x / static_cast<float>(width) - 1) * half_width;
-    const float sy = (2 * y / static_cast<float>(height) - 1) * half_height;
-    return rl::normalize(forward + right * sx + up * sy);
+    right_ = right * (half_height * width_ / height_);
+    up_ = rl::cross(right, forward_) * half_height;
+}
+
+rl::vec3 PixelRays::ray(float x, float y) const {
+    return rl::normalize(forward_ + right_ * (2 * x / width_ - 1) + up_ * (2 * y / height_ - 1));
 }
 
 // [doc:skybox]
@@ -61,12 +62,15 @@ void draw_skybox(const Environment& environment, const perspective::Camera& came
                  LightTarget& frame) {
     const rl::FloatImage* depth = frame.depth();
     const float clear = frame.depth_state.clear;
+    // The mip level (trilinear only) for a pixel's angular size at the
+    // image's centre: the screen spans 2 tan(fov / 2) over its height.
+    const float level =
+        environment.level_for(2 * std::tan(0.5 * rl::radians(camera.fov_y)) / frame.height());
+    const PixelRays rays(camera, frame.width(), frame.height());
     for (int y = 0; y < frame.height(); ++y)
         for (int x = 0; x < frame.width(); ++x) {
             if (depth && depth->get(x, y) != clear) continue;  // a model is there
-            frame.colour().set(x, y,
-                               environment.sample(pixel_ray(camera, frame.width(), frame.height(),
-                                                            x + 0.5f, y + 0.5f)));
+            frame.colour().set(x, y, environment.sample(rays.ray(x + 0.5f, y + 0.5f), level));
         }
 }
 // [/doc:skybox]

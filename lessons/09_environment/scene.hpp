@@ -38,10 +38,24 @@ struct RenderOptions {
     perspective::PipelineOptions pipeline;
 };
 
-// The direction (unit, world space) of the ray from the eye through the
-// point (x, y) of a width x height image (pixel centres at i + 0.5): the
-// inverse of what the camera's projection does to a point.
-rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x, float y);
+// The rays from the eye through a width x height image: the camera's frame,
+// found once per frame. ray(x, y) is the unit world direction through the
+// point (x, y) of the image (pixel centres at i + 0.5): the inverse of what
+// the camera's projection does to a point.
+class PixelRays {
+  public:
+    PixelRays(const perspective::Camera& camera, int width, int height);
+    rl::vec3 ray(float x, float y) const;
+
+  private:
+    rl::vec3 forward_, right_, up_;  // right and up scaled to the screen's half width and height
+    float width_, height_;
+};
+
+inline rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x,
+                          float y) {
+    return PixelRays(camera, width, height).ray(x, y);
+}
 
 // The sky behind the models: every pixel the models left at the far plane
 // (its depth still the clear value) gets the environment's radiance along
