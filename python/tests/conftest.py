@@ -21,6 +21,7 @@ PROGRAMS = {
     "06": "06_shading",
     "07": "07_normal_mapping",
     "08": "08_shadows",
+    "09": "09_environment",
     "12": "12_fast",
 }
 

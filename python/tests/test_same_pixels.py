@@ -162,6 +162,21 @@ def test_lesson08_unshadowed(programs):
          programs.image("08", "--show", "unshadowed", "--one-light", *SIZE))
 
 
+
+def test_lesson09_default(programs):
+    same(rasterlab.lesson09.render(map_size=64, **SMALL),
+         programs.image("09", "--map-size", 64, *SIZE))
+
+
+def test_lesson09_glass_latlong_studio(programs):
+    same(rasterlab.lesson09.render(environment="studio", map="latlong", map_size=32,
+                                   filter="trilinear", material="glass", tone_map="reinhard",
+                                   exposure=1.5, normal_map="none", skybox=False, **SMALL),
+         programs.image("09", "--environment", "studio", "--map", "latlong", "--map-size", 32,
+                        "--filter", "trilinear", "--material", "glass", "--tone-map",
+                        "reinhard", "--exposure", 1.5, "--normal-map", "none", "--no-skybox",
+                        *SIZE))
+
 @pytest.mark.parametrize("threads", [1, 2])
 def test_lesson12(programs, threads):
     same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),
