@@ -69,6 +69,19 @@ perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width,
     return scene;
 }
 
+perspective::ViewedScene<MappedModel> load_view(
+    const perspective::ViewOptions& view, TangentMethod tangents, int width, int height,
+    std::vector<std::string>& warnings,
+    const std::function<std::vector<MappedModel>(std::vector<std::string>&)>& default_models) {
+    const rl::TexelBudget budget;  // for the textures of all the models together
+    perspective::ViewedScene<MappedModel> scene;
+    if (view.models.empty()) scene.models = default_models(warnings);
+    for (const std::string& path : view.models)  // as stored: the identity model matrix
+        scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
+    scene.camera = perspective::view_camera(view, scene_box(scene.models), width, height, warnings);
+    return scene;
+}
+
 void build_mip_levels(const std::vector<MappedModel>& models) {
     for (const MappedModel& m : models) {
         try {

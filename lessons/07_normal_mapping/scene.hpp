@@ -5,6 +5,8 @@
 //   normal_mapping::render(models, camera, options, frame);
 #pragma once
 
+#include <functional>
+
 #include "06_shading/scene.hpp"
 #include "normal_mapped.hpp"
 
@@ -64,6 +66,15 @@ struct MappedView {
 // the option) for a camera it cannot use.
 perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
                                                  std::vector<std::string>& warnings);
+
+// The models a view asks for: `default_models(warnings)` when it names
+// none, else its files as stored (the identity model matrix, with
+// `tangents`), and the camera framing them for a width x height image.
+// Lessons 08 and 09 load their scenes with it.
+perspective::ViewedScene<MappedModel> load_view(
+    const perspective::ViewOptions& view, TangentMethod tangents, int width, int height,
+    std::vector<std::string>& warnings,
+    const std::function<std::vector<MappedModel>(std::vector<std::string>&)>& default_models);
 
 // Builds every texture's smaller mip levels now (they are built on first
 // use otherwise), so that a timed render of trilinear lookups times

@@ -1,5 +1,4 @@
 #include "scene.hpp"
-#include "rasterlab/texture_files.hpp"
 
 #include <stdexcept>
 
@@ -26,14 +25,7 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
 perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings) {
-    const rl::TexelBudget budget;  // for the textures of all the models together
-    perspective::ViewedScene<normal_mapping::MappedModel> scene;
-    if (view.models.empty()) scene.models = default_scene(warnings);
-    for (const std::string& path : view.models)  // as stored: the identity model matrix
-        scene.models.push_back(
-            normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
-    scene.camera = perspective::view_camera(view, scene_box(scene.models), width, height, warnings);
-    return scene;
+    return normal_mapping::load_view(view, tangents, width, height, warnings, default_scene);
 }
 
 void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bool one_light) {

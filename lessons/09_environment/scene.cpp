@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "rasterlab/texture_files.hpp"
 #include "rasterlab/transform.hpp"
 
 namespace environment {
@@ -26,20 +25,12 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
 perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings) {
-    const rl::TexelBudget budget;  // for the textures of all the models together
-    perspective::ViewedScene<normal_mapping::MappedModel> scene;
     perspective::ViewOptions framed = view;
-    if (view.models.empty()) {
-        scene.models = default_scene(warnings);
+    if (view.models.empty()) {  // the default scene's view, unless the options give one
         if (view.eye.empty()) framed.eye = {0.3f, 0.35f, 3.8f};
         if (view.target.empty()) framed.target = {0, 0, 0};
     }
-    for (const std::string& path : view.models)  // as stored: the identity model matrix
-        scene.models.push_back(
-            normal_mapping::load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
-    scene.camera = perspective::view_camera(framed, normal_mapping::scene_box(scene.models), width,
-                                            height, warnings);
-    return scene;
+    return normal_mapping::load_view(framed, tangents, width, height, warnings, default_scene);
 }
 
 PixelRays::PixelRays(const perspective::Camera& camera, int width, int height)

@@ -22,8 +22,14 @@ namespace {
 
 // Options that take a value the harness owns: sizes (a 16384 x 16384 image
 // is legal and slow) and output paths (the fuzzer must not write anywhere).
+// Lesson 09 (FUZZ_SMALL_MAP) also builds an environment map of --map-size
+// texels a side (up to 2048: seconds of work under the sanitizers).
 const std::set<std::string_view> kOwned = {"-o",      "--output", "--png", "--depth-out",
-                                           "--width", "--height", "--diff"};
+                                           "--width", "--height", "--diff",
+#ifdef FUZZ_SMALL_MAP
+                                           "--map-size"
+#endif
+};
 
 bool owned(std::string_view argument) {
     for (std::string_view option : kOwned)
@@ -62,6 +68,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     for (const char* fixed : {"--width", "40", "--height", "32", "-o"})
         arguments.emplace_back(fixed);
+#ifdef FUZZ_SMALL_MAP
+    arguments.insert(arguments.end() - 1, {"--map-size", "8"});
+#endif
     arguments.push_back(output);
     std::vector<char*> argv;
     for (std::string& a : arguments) argv.push_back(a.data());

@@ -333,16 +333,24 @@ TEST(ShadowsTest, FittingToTheViewKeepsCastersOutsideTheView) {
 // fill light stand for light from everywhere else, which one map cannot
 // test: a point in the crate's shadow is lit exactly as lesson 07 lights
 // it without the key light, and no pixel is darker than that.
-TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
-    const std::vector<MappedModel> models = floor_scene(true);
-    perspective::Camera camera;
-    camera.eye = {2.5f, 3.0f, 3.5f};
-    camera.target = {0, 0, 0};
-    camera.near = 0.5f;
-    camera.far = 20;
+// The floor with the crate, seen from above and in front, lit from the
+// right by a key light and lesson 07's fill light.
+struct LitFloor {
+    std::vector<MappedModel> models = floor_scene(true);
+    perspective::Camera camera{
+        .eye = {2.5f, 3.0f, 3.5f}, .target = {0, 0, 0}, .near = 0.5f, .far = 20};
     ShadowOptions options;
-    options.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});
-    options.render.lighting = shading::default_lighting(options.light.direction);
+    LitFloor() {
+        options.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});
+        options.render.lighting = shading::default_lighting(options.light.direction);
+    }
+};
+
+TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
+    LitFloor scene;
+    const std::vector<MappedModel>& models = scene.models;
+    const perspective::Camera& camera = scene.camera;
+    ShadowOptions& options = scene.options;
     ASSERT_GE(options.render.lighting.lights.size(), 2u) << "the test wants a fill light too";
     const ShadowMap map = shadow_map_for(models, camera, 1, options);
     perspective::ColourTarget shadowed = perspective::colour_target(96, 96);
@@ -367,15 +375,10 @@ TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
 // --show unshadowed, the page's "before" picture: the same light with
 // nothing in its map is lesson 07's render, every light whole.
 TEST(ShadowsTest, WithoutCastersTheImageIsLessonSevens) {
-    const std::vector<MappedModel> models = floor_scene(true);
-    perspective::Camera camera;
-    camera.eye = {2.5f, 3.0f, 3.5f};
-    camera.target = {0, 0, 0};
-    camera.near = 0.5f;
-    camera.far = 20;
-    ShadowOptions options;
-    options.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});
-    options.render.lighting = shading::default_lighting(options.light.direction);
+    LitFloor scene;
+    const std::vector<MappedModel>& models = scene.models;
+    const perspective::Camera& camera = scene.camera;
+    ShadowOptions& options = scene.options;
     options.casters = false;
     const ShadowMap map = shadow_map_for(models, camera, 1, options);
     perspective::ColourTarget unshadowed = perspective::colour_target(96, 96);
