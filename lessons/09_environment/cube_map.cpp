@@ -10,7 +10,6 @@ namespace environment {
 FacePoint face_point(rl::dvec3 d) {
     const double ax = std::fabs(d.x), ay = std::fabs(d.y), az = std::fabs(d.z);
     if (!(ax + ay + az > 0) || !std::isfinite(ax + ay + az)) return {Face::px, 0.5, 0.5};
-    // [doc:face-selection]
     // (s, t): the other two components along the face's right and up, as
     // seen from inside the cube; m: the largest component's size.
     double s, t, m;
@@ -26,7 +25,6 @@ FacePoint face_point(rl::dvec3 d) {
         s = d.z > 0 ? -d.x : d.x, t = d.y, m = az;
     }
     return {face, 0.5 * (s / m + 1), 0.5 * (t / m + 1)};
-    // [/doc:face-selection]
 }
 
 rl::dvec3 face_direction(Face face, double u, double v) {
@@ -91,7 +89,6 @@ rl::vec3 CubeMap::per_face(Face f, int level, double u, double v) const {
         face(f).level(level), {static_cast<float>(u), static_cast<float>(v)}, true, clamped));
 }
 
-// [doc:seamless]
 // Bilinear across the faces' edges: a tap that falls off the face is the
 // texel of the neighbouring face that its centre's direction points into.
 rl::vec3 CubeMap::seamless(Face f, int level, double u, double v) const {
@@ -116,7 +113,6 @@ rl::vec3 CubeMap::seamless(Face f, int level, double u, double v) const {
         }
     return rl::cast<float>(sum);
 }
-// [/doc:seamless]
 
 rl::vec3 CubeMap::sample(rl::vec3 direction, MapFilter filter, float level) const {
     const FacePoint p = face_point(rl::cast<double>(direction));

@@ -23,7 +23,6 @@ inline const char* name(Material value) {
 
 inline constexpr float kGlassIor = 1.5f;
 
-// [doc:environment-shader]
 struct EnvironmentShader {
     normal_mapping::NormalMappedShader surface;  // lesson 07: positions and normals
     const Environment& environment;
@@ -51,6 +50,5 @@ struct EnvironmentShader {
         return mirrored * share + environment.sample(*through) * (1 - share);
     }
 };
-// [/doc:environment-shader]
 
 }  // namespace environment

@@ -18,7 +18,6 @@ rl::vec3 rgb(rl::vec4 texel) {
 
 }  // namespace
 
-// [doc:latlong]
 rl::dvec2 latlong_point(rl::dvec3 d) {
     const double length = rl::length(d);
     if (!(length > 0) || !std::isfinite(length)) return {0.5, 0.5};
@@ -33,7 +32,6 @@ rl::dvec3 latlong_direction(double u, double v) {
     return {std::cos(latitude) * std::sin(longitude), std::sin(latitude),
             -std::cos(latitude) * std::cos(longitude)};
 }
-// [/doc:latlong]
 
 LatLongMap::LatLongMap(rl::HdrImage image) : map_(std::move(image)) {
     if (width() < 1 || height() < 1) throw std::invalid_argument("an empty lat-long map");
