@@ -1,0 +1,156 @@
+#include "irradiance.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace environment {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+rl::dvec3 unit_or_up(rl::vec3 n) {
+    const rl::dvec3 d = rl::cast<double>(n);
+    const double length = rl::length(d);
+    return length > 0 && std::isfinite(length) ? d / length : rl::dvec3{0, 1, 0};
+}
+
+// The area of the unit-distance face plane's rectangle [0, x] x [0, y] as
+// seen from the cube's centre: atan(x y / sqrt(x^2 + y^2 + 1)).
+double corner_angle(double x, double y) {
+    return std::atan2(x * y, std::sqrt(x * x + y * y + 1));
+}
+
+// A 32-bit hash step (PCG's output function): well-mixed bits from a counter.
+std::uint32_t hash(std::uint32_t v) {
+    v = v * 747796405u + 2891336453u;
+    v = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
+    return (v >> 22u) ^ v;
+}
+
+double unit_interval(std::uint32_t bits) {
+    return (bits >> 8) * (1.0 / 16777216.0);  // 24 bits: [0, 1)
+}
+
+}  // namespace
+
+std::array<double, 9> sh_basis(rl::dvec3 d) {
+    const double x = d.x, y = d.y, z = d.z;
+    return {0.282094791773878,
+            0.488602511902920 * y,
+            0.488602511902920 * z,
+            0.488602511902920 * x,
+            1.092548430592079 * x * y,
+            1.092548430592079 * y * z,
+            0.315391565252520 * (3 * z * z - 1),
+            1.092548430592079 * x * z,
+            0.546274215296040 * (x * x - y * y)};
+}
+
+double texel_solid_angle(int i, int j, int size) {
+    const double x0 = 2.0 * i / size - 1, x1 = 2.0 * (i + 1) / size - 1;
+    const double y0 = 2.0 * j / size - 1, y1 = 2.0 * (j + 1) / size - 1;
+    return corner_angle(x1, y1) - corner_angle(x0, y1) - corner_angle(x1, y0) +
+           corner_angle(x0, y0);
+}
+
+ShLight project_sh(const CubeMap& cube, int order) {
+    if (order < 1 || order > 3)
+        throw std::invalid_argument("spherical harmonics of order " + std::to_string(order) +
+                                    ": 1, 2 or 3");
+    ShLight sh;
+    sh.order = order;
+    const int count = order * order, n = cube.size();
+    for (Face f : kFaces) {
+        const rl::HdrImage& image = cube.face(f).level(0);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const rl::dvec3 d = rl::normalize(face_direction(f, (i + 0.5) / n, (j + 0.5) / n));
+                const rl::vec4 t = image.get(i, j);
+                const rl::dvec3 light = rl::dvec3{t.x, t.y, t.z} * texel_solid_angle(i, j, n);
+                const std::array<double, 9> y = sh_basis(d);
+                for (int k = 0; k < count; ++k) sh.coefficients[k] += light * y[k];
+            }
+    }
+    return sh;
+}
+
+rl::vec3 irradiance(const ShLight& sh, rl::vec3 normal) {
+    // The cosine window's band weights (Ramamoorthi and Hanrahan, 2001).
+    constexpr double band[3] = {kPi, 2 * kPi / 3, kPi / 4};
+    const std::array<double, 9> y = sh_basis(unit_or_up(normal));
+    rl::dvec3 e{0, 0, 0};
+    for (int k = 0; k < sh.order * sh.order; ++k) {
+        const int l = k == 0 ? 0 : k < 4 ? 1 : 2;
+        e += sh.coefficients[k] * (band[l] * y[k]);
+    }
+    return {static_cast<float>(std::max(e.x, 0.0)), static_cast<float>(std::max(e.y, 0.0)),
+            static_cast<float>(std::max(e.z, 0.0))};
+}
+
+CubeMap irradiance_map(const CubeMap& source, int size) {
+    if (size < 1 || size > 256)
+        throw std::invalid_argument("an irradiance map of " + std::to_string(size) +
+                                    " texels a side (1 to 256)");
+    int level = 0;
+    while (source.face(Face::px).level(level).width() > 32 && level + 1 < source.levels()) ++level;
+    const int n = source.face(Face::px).level(level).width();
+    struct Texel {
+        rl::dvec3 direction, light;  // light already times the texel's solid angle
+    };
+    std::vector<Texel> texels;
+    texels.reserve(static_cast<std::size_t>(6 * n * n));
+    for (Face f : kFaces) {
+        const rl::HdrImage& image = source.face(f).level(level);
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                const rl::vec4 t = image.get(i, j);
+                texels.push_back({rl::normalize(face_direction(f, (i + 0.5) / n, (j + 0.5) / n)),
+                                  rl::dvec3{t.x, t.y, t.z} * texel_solid_angle(i, j, n)});
+            }
+    }
+    std::array<rl::HdrImage, 6> faces;
+    for (Face f : kFaces) {
+        rl::HdrImage image(size, size);
+        for (int j = 0; j < size; ++j)
+            for (int i = 0; i < size; ++i) {
+                const rl::dvec3 normal =
+                    rl::normalize(face_direction(f, (i + 0.5) / size, (j + 0.5) / size));
+                rl::dvec3 e{0, 0, 0};
+                for (const Texel& t : texels) {
+                    const double c = rl::dot(normal, t.direction);
+                    if (c > 0) e += t.light * c;
+                }
+                image.set(
+                    i, j,
+                    {static_cast<float>(e.x), static_cast<float>(e.y), static_cast<float>(e.z), 1});
+            }
+        faces[static_cast<std::size_t>(f)] = std::move(image);
+    }
+    return CubeMap(std::move(faces));
+}
+
+rl::vec3 irradiance_monte_carlo(const CubeMap& source, rl::vec3 normal, int samples,
+                                std::uint32_t seed) {
+    const rl::dvec3 n = unit_or_up(normal);
+    // A frame around n: two unit tangents t and b.
+    const rl::dvec3 helper = std::fabs(n.y) < 0.9 ? rl::dvec3{0, 1, 0} : rl::dvec3{1, 0, 0};
+    const rl::dvec3 t = rl::normalize(rl::cross(helper, n)), b = rl::cross(n, t);
+    rl::dvec3 sum{0, 0, 0};
+    const int count = std::max(samples, 1);
+    for (int s = 0; s < count; ++s) {
+        // Cosine-distributed: a uniform point on the unit disc, lifted onto
+        // the hemisphere (Malley's method); its pdf cos / pi cancels the cosine.
+        const std::uint32_t h = hash(seed ^ hash(static_cast<std::uint32_t>(s)));
+        const double r = std::sqrt(unit_interval(h)), phi = 2 * kPi * unit_interval(hash(h));
+        const double x = r * std::cos(phi), y = r * std::sin(phi);
+        const rl::dvec3 d = t * x + b * y + n * std::sqrt(std::max(0.0, 1 - x * x - y * y));
+        sum += rl::cast<double>(source.sample(rl::cast<float>(d), MapFilter::seamless));
+    }
+    return rl::cast<float>(sum * (kPi / count));
+}
+
+}  // namespace environment
