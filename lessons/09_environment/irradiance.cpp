@@ -133,8 +133,8 @@ CubeMap irradiance_map(const CubeMap& source, int size) {
     return CubeMap(std::move(faces));
 }
 
-rl::vec3 irradiance_monte_carlo(const CubeMap& source, rl::vec3 normal, int samples,
-                                std::uint32_t seed) {
+rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source, rl::vec3 normal,
+                                int samples, std::uint32_t seed) {
     const rl::dvec3 n = unit_or_up(normal);
     // A frame around n: two unit tangents t and b.
     const rl::dvec3 helper = std::fabs(n.y) < 0.9 ? rl::dvec3{0, 1, 0} : rl::dvec3{1, 0, 0};
@@ -148,9 +148,47 @@ rl::vec3 irradiance_monte_carlo(const CubeMap& source, rl::vec3 normal, int samp
         const double r = std::sqrt(unit_interval(h)), phi = 2 * kPi * unit_interval(hash(h));
         const double x = r * std::cos(phi), y = r * std::sin(phi);
         const rl::dvec3 d = t * x + b * y + n * std::sqrt(std::max(0.0, 1 - x * x - y * y));
-        sum += rl::cast<double>(source.sample(rl::cast<float>(d), MapFilter::seamless));
+        sum += rl::cast<double>(source(rl::cast<float>(d)));
     }
     return rl::cast<float>(sum * (kPi / count));
+}
+
+DiffuseLight::DiffuseLight(const std::function<rl::vec3(rl::vec3)>& environment, Irradiance method,
+                           int samples)
+    : method_(method), samples_(samples), environment_(environment) {
+    if (samples < 1 || samples > kMaxIrradianceSamples)
+        throw std::invalid_argument("--samples: " + std::to_string(samples) + " is outside 1 to " +
+                                    std::to_string(kMaxIrradianceSamples));
+    if (method == Irradiance::monte_carlo) return;
+    const CubeMap cube = cube_map(
+        [&](rl::dvec3 d) { return rl::cast<double>(environment(rl::cast<float>(d))); }, 64, 1);
+    switch (method) {
+        case Irradiance::sh1:
+            sh_ = project_sh(cube, 1);
+            break;
+        case Irradiance::sh2:
+            sh_ = project_sh(cube, 2);
+            break;
+        case Irradiance::sh3:
+            sh_ = project_sh(cube, 3);
+            break;
+        case Irradiance::convolved:
+            convolved_ = irradiance_map(cube, 16);
+            break;
+        case Irradiance::monte_carlo:
+            break;
+    }
+}
+
+rl::vec3 DiffuseLight::at(rl::vec3 normal, std::uint32_t seed) const {
+    switch (method_) {
+        case Irradiance::convolved:
+            return convolved_->sample(normal, MapFilter::seamless);
+        case Irradiance::monte_carlo:
+            return irradiance_monte_carlo(environment_, normal, samples_, seed);
+        default:
+            return irradiance(sh_, normal);
+    }
 }
 
 }  // namespace environment

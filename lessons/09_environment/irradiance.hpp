@@ -10,10 +10,15 @@
 //   const environment::ShLight sh = environment::project_sh(cube, 3);
 //   const rl::vec3 e = environment::irradiance(sh, normal);            // 9 numbers per channel
 //   const environment::CubeMap e_map = environment::irradiance_map(cube, 16);
+//   const environment::DiffuseLight diffuse(
+//       [&](rl::vec3 d) { return env.sample(d); }, environment::Irradiance::sh3);
+//   const rl::vec3 e2 = diffuse.at(normal);
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <optional>
 
 #include "cube_map.hpp"
 
@@ -50,9 +55,47 @@ rl::vec3 irradiance(const ShLight& sh, rl::vec3 normal);
 CubeMap irradiance_map(const CubeMap& source, int size);
 
 // E(n) by Monte Carlo: `samples` cosine-distributed directions around n,
-// each worth pi / samples of its radiance; `seed` picks the directions (a
-// pixel's own seed gives noise that does not crawl between frames).
-rl::vec3 irradiance_monte_carlo(const CubeMap& source, rl::vec3 normal, int samples,
-                                std::uint32_t seed);
+// each worth pi / samples of the radiance `source` gives for it; `seed`
+// picks the directions (a pixel's own seed gives noise that does not crawl
+// between frames).
+rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source, rl::vec3 normal,
+                                int samples, std::uint32_t seed);
+
+// How a render finds E at a pixel.
+enum class Irradiance { sh1, sh2, sh3, convolved, monte_carlo };
+inline constexpr std::array<rl::Named<Irradiance>, 5> kIrradianceNames = {
+    {{Irradiance::sh1, "sh1"},
+     {Irradiance::sh2, "sh2"},
+     {Irradiance::sh3, "sh3"},
+     {Irradiance::convolved, "convolved"},
+     {Irradiance::monte_carlo, "monte-carlo"}}};
+inline constexpr std::array<Irradiance, 5> kIrradiances = rl::values_of(kIrradianceNames);
+inline const char* name(Irradiance value) {
+    return rl::name_in(kIrradianceNames, value);
+}
+
+// The most Monte Carlo rays a pixel may take.
+inline constexpr int kMaxIrradianceSamples = 65536;
+
+// One method's diffuse light, prepared once per environment: the harmonics
+// or the convolved map (from a 64-texel cube of the environment: E needs no
+// more), or, for Monte Carlo, the environment itself and the ray count.
+class DiffuseLight {
+  public:
+    // `environment` must outlive this (Monte Carlo reads it per pixel).
+    // Throws std::invalid_argument for samples outside 1..kMaxIrradianceSamples.
+    DiffuseLight(const std::function<rl::vec3(rl::vec3)>& environment, Irradiance method,
+                 int samples = 64);
+    Irradiance method() const { return method_; }
+    // E at a unit normal; `seed` is used by Monte Carlo only.
+    rl::vec3 at(rl::vec3 normal, std::uint32_t seed = 0) const;
+
+  private:
+    Irradiance method_;
+    int samples_;
+    std::function<rl::vec3(rl::vec3)> environment_;
+    ShLight sh_;
+    std::optional<CubeMap> convolved_;
+};
 
 }  // namespace environment

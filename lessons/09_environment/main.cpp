@@ -38,6 +38,13 @@ int main(int argc, char** argv) {
                           "How the map is read between texels");
     rl::add_method_option(app, "--material", options.material, environment::kMaterials,
                           "What the models are made of");
+    rl::add_method_option(app, "--irradiance", options.irradiance, environment::kIrradiances,
+                          "How a diffuse surface finds the light arriving from its hemisphere");
+    app.add_option("--samples", options.samples,
+                   "Monte Carlo's rays per pixel (--irradiance monte-carlo; 1 to " +
+                       std::to_string(environment::kMaxIrradianceSamples) + ")")
+        ->capture_default_str()
+        ->check(CLI::Range(1, environment::kMaxIrradianceSamples));
     rl::add_method_option(app, "--tone-map", exposure.curve, environment::kToneMaps,
                           "How light above 1 is brought into the image");
     app.add_option("--exposure", exposure.stops, "Exposure in stops: the light times 2^stops")

@@ -73,17 +73,23 @@ perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel
     normal_mapping::RenderOptions surfaces;
     surfaces.normal_map = options.normal_map;
     surfaces.filter = options.map_filter;
-    textures::SamplerState sampler;
+    textures::SamplerState sampler;  // the albedo's: sRGB bytes decoded to linear light
     sampler.filter = options.map_filter;
+    sampler.encoding = &shading::srgb_texels();
+    std::optional<DiffuseLight> diffuse;
+    if (options.material == Material::diffuse)
+        diffuse.emplace([&](rl::vec3 d) { return environment.sample(d); }, options.irradiance,
+                        options.samples);
     perspective::PipelineCounts counts;
     for (const normal_mapping::MappedModel& m : models) {
         const std::optional<shading::Placed> p = shading::place(
             m.lit, view_projection, camera, surfaces.lighting, sampler, true, counts);
         if (!p) continue;
-        counts += perspective::draw(p->surface,
-                                    EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces),
-                                                      environment, options.material},
-                                    frame, options.pipeline);
+        counts += perspective::draw(
+            p->surface,
+            EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces), environment,
+                              options.material, diffuse ? &*diffuse : nullptr},
+            frame, options.pipeline);
     }
     if (options.skybox) draw_skybox(environment, camera, frame);
     return counts;

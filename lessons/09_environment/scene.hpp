@@ -32,6 +32,8 @@ perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
 
 struct RenderOptions {
     Material material = Material::mirror;
+    Irradiance irradiance = Irradiance::sh3;  // for Material::diffuse
+    int samples = 64;                         // Monte Carlo's rays per pixel
     normal_mapping::NormalMap normal_map = normal_mapping::NormalMap::tangent;
     textures::Filter map_filter = textures::Filter::trilinear;  // the normal maps'
     bool skybox = true;

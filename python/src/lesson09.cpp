@@ -19,8 +19,9 @@ void bind_lesson09(py::module_ m) {
         [](py::object models, std::optional<Camera> camera, Int<"width"> width,
            Int<"height"> height, py::object source, const std::string& map,
            Int<"map_size"> map_size, const std::string& filter, const std::string& material,
-           const std::string& tone_map, Real<"exposure"> exposure, const std::string& normal_map,
-           const std::string& tangents, bool skybox) {
+           const std::string& irradiance, Int<"samples"> samples, const std::string& tone_map,
+           Real<"exposure"> exposure, const std::string& normal_map, const std::string& tangents,
+           bool skybox) {
             check_size(width, height);
             environment::EnvironmentOptions env_options;
             env_options.source = model_path(source, "environment");
@@ -29,6 +30,8 @@ void bind_lesson09(py::module_ m) {
             env_options.filter = choice("--filter", filter, environment::kMapFilters);
             environment::RenderOptions options;
             options.material = choice("--material", material, environment::kMaterials);
+            options.irradiance = choice("--irradiance", irradiance, environment::kIrradiances);
+            options.samples = samples;
             options.normal_map = choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
             options.skybox = skybox;
             environment::Exposure exposure_options;
@@ -58,11 +61,14 @@ void bind_lesson09(py::module_ m) {
         py::arg("map") = environment::name(defaults.layout), py::arg("map_size") = defaults.size,
         py::arg("filter") = environment::name(defaults.filter),
         py::arg("material") = environment::name(environment::RenderOptions{}.material),
+        py::arg("irradiance") = environment::name(environment::RenderOptions{}.irradiance),
+        py::arg("samples") = environment::RenderOptions{}.samples,
         py::arg("tone_map") = environment::name(environment::Exposure{}.curve),
         py::arg("exposure") = 0.0, py::arg("normal_map") = "tangent", py::arg("tangents") = "split",
         py::arg("skybox") = true,
-        "09_environment: the globe and the torus (or the models given, as stored) as mirrors or "
-        "glass lit by the environment (sky, studio or the path of a lat-long .hdr), the sky "
+        "09_environment: the globe and the torus (or the models given, as stored) as mirrors, "
+        "glass or diffuse surfaces lit by the environment (sky, studio or the path of a lat-long "
+        ".hdr), the sky "
         "behind them, linear light tone mapped to sRGB");
 }
 

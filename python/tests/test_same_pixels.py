@@ -177,6 +177,14 @@ def test_lesson09_glass_latlong_studio(programs):
                         "reinhard", "--exposure", 1.5, "--normal-map", "none", "--no-skybox",
                         *SIZE))
 
+
+@pytest.mark.parametrize("irradiance", ["sh2", "convolved", "monte-carlo"])
+def test_lesson09_diffuse(programs, irradiance):
+    same(rasterlab.lesson09.render(material="diffuse", irradiance=irradiance, samples=8,
+                                   map_size=32, **SMALL),
+         programs.image("09", "--material", "diffuse", "--irradiance", irradiance, "--samples", 8,
+                        "--map-size", 32, *SIZE))
+
 @pytest.mark.parametrize("threads", [1, 2])
 def test_lesson12(programs, threads):
     same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),

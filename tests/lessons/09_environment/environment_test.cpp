@@ -120,6 +120,49 @@ TEST(Skybox, FillsOnlyWhatTheModelsLeft) {
     EXPECT_GT(sky, 1000);
 }
 
+// The white furnace through the whole render: in an environment of
+// radiance 1 everywhere a diffuse surface reflects its albedo exactly, by
+// every irradiance method; so the frame equals lesson 07's with no light but
+// an ambient term of 1 (which is albedo times 1), to a level.
+TEST(Diffuse, TheWhiteFurnaceGivesBackTheAlbedo) {
+    std::vector<std::string> warnings;
+    perspective::ViewOptions view;
+    const auto scene = load_scene(view, normal_mapping::TangentMethod::split, 64, 48, warnings);
+    normal_mapping::RenderOptions ambient_only;
+    ambient_only.lighting.lights.clear();
+    ambient_only.lighting.ambient = {1, 1, 1};
+    ambient_only.lighting.specular = {0, 0, 0};
+    perspective::ColourTarget lesson07 = perspective::colour_target(64, 48, rl::Rgba{0, 0, 0, 255});
+    normal_mapping::render(scene.models, scene.camera, ambient_only, lesson07);
+    const Environment white(cube_map(
+                                [](rl::dvec3) {
+                                    return rl::dvec3{1, 1, 1};
+                                },
+                                8, 1),
+                            MapFilter::seamless);
+    for (Irradiance method : kIrradiances) {
+        RenderOptions options;
+        options.material = Material::diffuse;
+        options.irradiance = method;
+        options.samples = 4;
+        options.skybox = false;
+        LightTarget frame = light_target(64, 48);
+        render(scene.models, scene.camera, white, options, frame);
+        const rl::Image picture = tone_mapped(frame.colour(), {ToneMap::clamp, 0});
+        int drawn = 0, off = 0;
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 64; ++x) {
+                if (frame.depth()->get(x, y) == frame.depth_state.clear) continue;
+                ++drawn;
+                const rl::Rgba a = picture.get(x, y), b = lesson07.colour().get(x, y);
+                off +=
+                    std::abs(a.r - b.r) > 1 || std::abs(a.g - b.g) > 1 || std::abs(a.b - b.b) > 1;
+            }
+        EXPECT_GT(drawn, 300);
+        EXPECT_EQ(off, 0) << name(method);
+    }
+}
+
 TEST(Environments, SizesOutsideTheCapAreRefused) {
     std::vector<std::string> warnings;
     EXPECT_THROW(make_environment({.size = 0}, warnings), std::invalid_argument);
