@@ -2,17 +2,25 @@
 // lat-long map, by each filter, at map sizes from 16 to 1024 texels, in
 // three views (the program's, one into a cube edge, one straight up at the
 // pole), against the analytic sky averaged over each pixel; and the time
-// the sky pass takes per frame. Writes 09_maps.csv. The lab's sky has a
+// the sky pass takes per frame. Writes 09_maps.csv. Then diffuse light: the
+// irradiance by spherical harmonics, the convolved map and Monte Carlo at
+// 4 to 4096 rays, against the sky's irradiance by quadrature, over normals
+// spread evenly on the sphere, with the time per normal and to prepare.
+// Writes 09_irradiance.csv. The lab's sky has a
 // plain ground: the checker's squares shrink without bound towards the
 // horizon, so no map and no pixel's 16 rays hold them, and the score would
 // measure that aliasing instead of the maps.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <numbers>
 
+#include "09_environment/irradiance.hpp"
+#include "irradiance_truth.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
@@ -86,6 +94,32 @@ void sky_pass(benchmark::State& state, const Environment* env, perspective::Came
     state.SetItemsProcessed(state.iterations() * size * size);
 }
 
+// n directions spread evenly over the sphere (a Fibonacci spiral).
+std::vector<rl::vec3> spread_normals(int n) {
+    std::vector<rl::vec3> out;
+    const double golden = std::numbers::pi * (3 - std::sqrt(5.0));
+    for (int i = 0; i < n; ++i) {
+        const double y = 1 - 2 * (i + 0.5) / n, r = std::sqrt(1 - y * y);
+        out.push_back(
+            rl::cast<float>(rl::dvec3{r * std::cos(golden * i), y, r * std::sin(golden * i)}));
+    }
+    return out;
+}
+
+struct IrradianceCase {
+    std::string name;
+    std::shared_ptr<DiffuseLight> light;
+    double prepare_ms;
+};
+
+void evaluate(benchmark::State& state, const DiffuseLight* light,
+              const std::vector<rl::vec3>* normals) {
+    for (auto _ : state)
+        for (std::size_t i = 0; i < normals->size(); ++i)
+            benchmark::DoNotOptimize(light->at((*normals)[i], static_cast<std::uint32_t>(i)));
+    state.SetItemsProcessed(state.iterations() * static_cast<long long>(normals->size()));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -128,6 +162,35 @@ int main(int argc, char** argv) {
                                              all_views[0].camera, image)
                     ->Unit(benchmark::kMillisecond);
             }
+        // Diffuse light: the program's default environment (the sky as a 512
+        // cube map), and the exact irradiance of the analytic sky.
+        std::vector<std::string> warnings;
+        const Environment sky = make_environment({.size = options.quick ? 64 : 512}, warnings);
+        const auto sampled = [&sky](rl::vec3 d) { return sky.sample(d); };
+        const std::vector<rl::vec3> normals = spread_normals(options.quick ? 8 : 64);
+        std::vector<rl::dvec3> exact;
+        for (rl::vec3 n : normals)
+            exact.push_back(exact_irradiance([](rl::dvec3 d) { return radiance(Analytic::sky, d); },
+                                             rl::cast<double>(n), options.quick ? 64 : 384));
+        std::vector<IrradianceCase> cases;
+        auto add_case = [&](const std::string& label, Irradiance method, int samples) {
+            const auto start = std::chrono::steady_clock::now();
+            auto light = std::make_shared<DiffuseLight>(sampled, method, samples);
+            const std::chrono::duration<double, std::milli> ms =
+                std::chrono::steady_clock::now() - start;
+            cases.push_back({label, light, ms.count()});
+            benchmark::RegisterBenchmark(("irradiance/" + label).c_str(), evaluate, light.get(),
+                                         &normals)
+                ->Unit(benchmark::kMicrosecond);
+        };
+        for (Irradiance method :
+             {Irradiance::sh1, Irradiance::sh2, Irradiance::sh3, Irradiance::convolved})
+            add_case(name(method), method, 1);
+        for (int samples :
+             options.quick ? std::vector<int>{4, 64} : std::vector<int>{4, 16, 64, 256, 1024, 4096})
+            add_case("monte-carlo, " + std::to_string(samples) + " rays", Irradiance::monte_carlo,
+                     samples);
+
         const std::map<std::string, rl::lab::Timing> timings = rl::lab::run_benchmarks();
 
         rl::ResultsTable table({"view", "method", "map_size", "mib", "ms_per_frame", "ms_min",
@@ -150,6 +213,26 @@ int main(int argc, char** argv) {
             }
         table.write_csv(options.out_dir / "09_maps.csv");
         std::printf("wrote %s\n", (options.out_dir / "09_maps.csv").c_str());
+
+        rl::ResultsTable diffuse({"method", "ns_per_normal", "ns_min", "ns_max", "prepare_ms",
+                                  "mean_error_percent", "max_error_percent", "normals"});
+        for (const IrradianceCase& c : cases) {
+            const rl::lab::Timing& t = timings.at("irradiance/" + c.name);
+            double sum = 0, worst = 0;
+            for (std::size_t i = 0; i < normals.size(); ++i) {
+                const rl::dvec3 e =
+                    rl::cast<double>(c.light->at(normals[i], static_cast<std::uint32_t>(i)));
+                const double error = 100 * rl::length(e - exact[i]) / rl::length(exact[i]);
+                sum += error;
+                worst = std::max(worst, error);
+            }
+            const double count = static_cast<double>(normals.size());
+            diffuse.add_row({c.name, t.median_ns / count, t.min_ns / count, t.max_ns / count,
+                             c.prepare_ms, sum / count, worst,
+                             static_cast<long long>(normals.size())});
+        }
+        diffuse.write_csv(options.out_dir / "09_irradiance.csv");
+        std::printf("wrote %s\n", (options.out_dir / "09_irradiance.csv").c_str());
         return 0;
     });
 }
