@@ -23,6 +23,9 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   08_light_box_fit.svg       the light's box fitted to the scene or to the view: texel size
   08_normal_offset.svg       the point looked up moved along its normal: acne gone, by a texel
   08_pcf_kernel.svg          a 3x3 kernel's answers around (u, v), and the edge they soften
+  09_cube_faces.svg          a direction's face and place, seen from above; the six faces unfolded
+  09_latlong.svg             the lat-long map: longitude across, latitude up, the pole's row, the seam
+  09_reflect_refract.svg     reflection and refraction at glass, with Snell's angles and Fresnel's share
   12_tiles_and_bins.svg      a frame cut into tiles, each tile's bin of triangles, the owning thread
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
@@ -1033,6 +1036,97 @@ def frame_path(out):
     save(figure, out, "13_frame_path.svg")
 
 
+def cube_faces(out):
+    figure, (left, right) = plt.subplots(1, 2, figsize=(9, 4.2))
+    # Left: the cube seen from above (+y), x to the right and so +z down the
+    # page: the side faces and the face a direction points into.
+    left.add_patch(Rectangle((-1, -1), 2, 2, fill=False, color=INK, lw=1.4))
+    for sx, sz in ((1, 1), (1, -1)):
+        left.plot([-1.0 * sx, 1.0 * sx], [-1.0 * sz, 1.0 * sz], color="#bbbbbb", lw=0.8, ls="--")
+    for label, (x, y) in {"+x": (1.12, 0), "-x": (-1.12, 0), "-z": (0, 1.12), "+z": (0, -1.12)}.items():
+        left.text(x, y, label, ha="center", va="center", fontsize=9, color=INK)
+    dx, dz = 0.9, 0.45  # a direction whose largest part is x: the +x face, z / x = 0.5 below centre
+    hit = (1.0, -dz / dx)
+    left.annotate("", hit, (0, 0), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.6))
+    left.plot(*hit, "o", color=ACCENT, ms=5)
+    left.text(0.15, -0.02, "d = (0.9, y, 0.45)", color=ACCENT, fontsize=8, rotation=-27, va="bottom")
+    left.text(1.12, hit[1] - 0.05, "z / x = 0.5\nu = (0.5 + 1) / 2 = 0.75", fontsize=8,
+              color=ACCENT, va="top")
+    left.text(0, -1.55, "seen from above: the largest |component| picks the face,\n"
+              "the other two divided by it place the point on it (dashed: the ties)",
+              ha="center", fontsize=8)
+    bare(left, (-1.8, 2.6), (-1.9, 1.5))
+    # Right: the six faces unfolded around -z, each as seen from inside, v up.
+    net = {"+y": (1, 2), "-x": (0, 1), "-z": (1, 1), "+x": (2, 1), "+z": (3, 1), "-y": (1, 0)}
+    for label, (col, row) in net.items():
+        right.add_patch(Rectangle((col, row), 1, 1, facecolor=SOFT, edgecolor=INK, lw=1.0))
+        right.text(col + 0.5, row + 0.5, label, ha="center", va="center", fontsize=10)
+        right.annotate("", (col + 0.9, row + 0.1), (col + 0.1, row + 0.1),
+                       arrowprops=dict(arrowstyle="->", color=LINE, lw=0.9))
+        right.annotate("", (col + 0.1, row + 0.9), (col + 0.1, row + 0.1),
+                       arrowprops=dict(arrowstyle="->", color=LINE, lw=0.9))
+    right.text(1.55, 1.12, "u", color=LINE, fontsize=7)
+    right.text(1.13, 1.55, "v", color=LINE, fontsize=7)
+    right.text(2.0, -0.35, "unfolded, each face as seen from inside the cube: +z is behind the camera",
+               ha="center", fontsize=8)
+    bare(right, (-0.2, 4.2), (-0.6, 3.1))
+    save(figure, out, "09_cube_faces.svg")
+
+
+def latlong(out):
+    figure, axes = plt.subplots(figsize=(8, 4.4))
+    axes.add_patch(Rectangle((0, 0), 2, 1, facecolor=SOFT, edgecolor=INK, lw=1.2))
+    for k in range(1, 8):
+        axes.plot([k / 4, k / 4], [0, 1], color="#bbbbbb", lw=0.6)
+    for k in range(1, 4):
+        axes.plot([0, 2], [k / 4, k / 4], color="#bbbbbb", lw=0.6)
+    axes.plot([0, 2], [0.5, 0.5], color=INK, lw=0.9)
+    for u, label in ((0.0, "+z\n(u = 0)"), (0.5, "-x"), (1.0, "-z\n(u = 0.5)"), (1.5, "+x"), (2.0, "+z\n(u = 1)")):
+        axes.text(u, -0.05, label, ha="center", va="top", fontsize=8)
+    axes.text(-0.05, 1.0, "up (v = 1)", ha="right", va="center", fontsize=8)
+    axes.text(-0.05, 0.5, "horizon", ha="right", va="center", fontsize=8)
+    axes.text(-0.05, 0.0, "down (v = 0)", ha="right", va="center", fontsize=8)
+    # The top row: all of it is one point of the sphere.
+    axes.add_patch(Rectangle((0, 15 / 16), 2, 1 / 16, facecolor="#f3c9bd", edgecolor=ACCENT, lw=0.8))
+    axes.text(1.0, 1.08, "the top row of texels: one point, the zenith, stretched over the full width",
+              ha="center", fontsize=8, color=ACCENT)
+    axes.annotate("", (2.0, 0.3), (1.9, 0.3), arrowprops=dict(arrowstyle="->", color=LINE))
+    axes.annotate("", (0.0, 0.3), (0.1, 0.3), arrowprops=dict(arrowstyle="->", color=LINE))
+    axes.text(1.0, 0.3, "u = 0 and u = 1 are the same longitude: the seam wraps", ha="center",
+              fontsize=8, color=LINE)
+    axes.text(1.0, -0.42, "u = 1/2 + atan2(x, -z) / 2 pi          v = 1/2 + asin(y) / pi",
+              ha="center", fontsize=9)
+    bare(axes, (-0.5, 2.2), (-0.55, 1.2))
+    save(figure, out, "09_latlong.svg")
+
+
+def reflect_refract(out):
+    figure, axes = plt.subplots(figsize=(6.5, 4.2))
+    axes.add_patch(Rectangle((-2.2, -1.8), 4.4, 1.8, color=SOFT))
+    axes.plot([-2.2, 2.2], [0, 0], color=INK, lw=1.5)
+    axes.text(-2.1, 0.08, "air, n1 = 1", fontsize=8, va="bottom")
+    axes.text(-2.1, -0.1, "glass, n2 = 1.5", fontsize=8, va="top")
+    theta_i = math.radians(50)
+    theta_t = math.asin(math.sin(theta_i) / 1.5)
+    axes.annotate("", (0, 1.5), (0, 0), arrowprops=dict(arrowstyle="->", color=INK, lw=1.4))
+    axes.text(0.05, 1.5, "n", fontsize=9)
+    eye = (-1.5 * math.sin(theta_i), 1.5 * math.cos(theta_i))
+    axes.annotate("", (0, 0), eye, arrowprops=dict(arrowstyle="->", color=LINE, lw=1.6))
+    axes.text(eye[0] - 0.05, eye[1], "from the eye: -v", color=LINE, fontsize=8, ha="right")
+    r = (1.5 * math.sin(theta_i), 1.5 * math.cos(theta_i))
+    axes.annotate("", r, (0, 0), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.6, ls="--"))
+    axes.text(r[0] + 0.05, r[1], "r = reflect(-v, n)\nshare F (Schlick)", color=ACCENT, fontsize=8)
+    t = (1.5 * math.sin(theta_t), -1.5 * math.cos(theta_t))
+    axes.annotate("", t, (0, 0), arrowprops=dict(arrowstyle="->", color="#208040", lw=1.6))
+    axes.text(t[0] + 0.05, t[1], "t: bent towards n\nshare 1 - F", color="#208040", fontsize=8)
+    axes.text(-0.45, 0.55, f"{math.degrees(theta_i):.0f}°", fontsize=8)
+    axes.text(0.08, -0.55, f"{math.degrees(theta_t):.1f}°", fontsize=8)
+    axes.text(0, -1.95, "Snell: n1 sin 50° = n2 sin 30.7°;   F = F0 + (1 - F0)(1 - cos 50°)^5 = 0.046,"
+              "  F0 = ((1.5 - 1) / (1.5 + 1))^2 = 0.04", ha="center", fontsize=7.5)
+    bare(axes, (-2.3, 2.4), (-2.1, 1.8))
+    save(figure, out, "09_reflect_refract.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
@@ -1040,7 +1134,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path):
+                 lane_queue, frame_path, cube_faces, latlong, reflect_refract):
         draw(out)
 
 

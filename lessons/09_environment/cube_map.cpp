@@ -7,6 +7,7 @@
 
 namespace environment {
 
+// [doc:face-selection]
 FacePoint face_point(rl::dvec3 d) {
     const double ax = std::fabs(d.x), ay = std::fabs(d.y), az = std::fabs(d.z);
     if (!(ax + ay + az > 0) || !std::isfinite(ax + ay + az)) return {Face::px, 0.5, 0.5};
@@ -26,6 +27,7 @@ FacePoint face_point(rl::dvec3 d) {
     }
     return {face, 0.5 * (s / m + 1), 0.5 * (t / m + 1)};
 }
+// [/doc:face-selection]
 
 rl::dvec3 face_direction(Face face, double u, double v) {
     const double a = 2 * u - 1, b = 2 * v - 1;
@@ -91,6 +93,7 @@ rl::vec3 CubeMap::per_face(Face f, int level, double u, double v) const {
 
 // Bilinear across the faces' edges: a tap that falls off the face is the
 // texel of the neighbouring face that its centre's direction points into.
+// [doc:seamless]
 rl::vec3 CubeMap::seamless(Face f, int level, double u, double v) const {
     const rl::HdrImage& image = face(f).level(level);
     const int n = image.width();
@@ -113,6 +116,7 @@ rl::vec3 CubeMap::seamless(Face f, int level, double u, double v) const {
         }
     return rl::cast<float>(sum);
 }
+// [/doc:seamless]
 
 rl::vec3 CubeMap::sample(rl::vec3 direction, MapFilter filter, float level) const {
     const FacePoint p = face_point(rl::cast<double>(direction));

@@ -27,6 +27,7 @@ inline const char* name(Material value) {
 
 inline constexpr float kGlassIor = 1.5f;
 
+// [doc:environment-shader]
 struct EnvironmentShader {
     normal_mapping::NormalMappedShader surface;  // lesson 07: positions and normals
     const Environment& environment;
@@ -64,5 +65,6 @@ struct EnvironmentShader {
         return mirrored * share + environment.sample(*through) * (1 - share);
     }
 };
+// [/doc:environment-shader]
 
 }  // namespace environment

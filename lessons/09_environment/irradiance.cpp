@@ -78,6 +78,7 @@ ShLight project_sh(const CubeMap& cube, int order) {
     return sh;
 }
 
+// [doc:sh-irradiance]
 rl::vec3 irradiance(const ShLight& sh, rl::vec3 normal) {
     // The cosine window's band weights (Ramamoorthi and Hanrahan, 2001).
     constexpr double band[3] = {kPi, 2 * kPi / 3, kPi / 4};
@@ -90,6 +91,7 @@ rl::vec3 irradiance(const ShLight& sh, rl::vec3 normal) {
     return {static_cast<float>(std::max(e.x, 0.0)), static_cast<float>(std::max(e.y, 0.0)),
             static_cast<float>(std::max(e.z, 0.0))};
 }
+// [/doc:sh-irradiance]
 
 CubeMap irradiance_map(const CubeMap& source, int size) {
     if (size < 1 || size > 256)

@@ -48,6 +48,7 @@ rl::vec3 PixelRays::ray(float x, float y) const {
     return rl::normalize(forward_ + right_ * (2 * x / width_ - 1) + up_ * (2 * y / height_ - 1));
 }
 
+// [doc:skybox]
 void draw_skybox(const Environment& environment, const perspective::Camera& camera,
                  LightTarget& frame) {
     const rl::FloatImage* depth = frame.depth();
@@ -63,6 +64,7 @@ void draw_skybox(const Environment& environment, const perspective::Camera& came
             frame.colour().set(x, y, environment.sample(rays.ray(x + 0.5f, y + 0.5f), level));
         }
 }
+// [/doc:skybox]
 
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
                                    const perspective::Camera& camera,

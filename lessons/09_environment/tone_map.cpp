@@ -5,6 +5,7 @@
 
 namespace environment {
 
+// [doc:tone-map]
 float tone_map(float light, const Exposure& exposure) {
     const float c = light * std::exp2(exposure.stops);
     if (!(c > 0) || !std::isfinite(c)) return 0;
@@ -19,6 +20,7 @@ float tone_map(float light, const Exposure& exposure) {
     }
     return 0;
 }
+// [/doc:tone-map]
 
 rl::vec3 tone_map(rl::vec3 light, const Exposure& exposure) {
     return {tone_map(light.x, exposure), tone_map(light.y, exposure), tone_map(light.z, exposure)};

@@ -91,6 +91,23 @@ TEST(CubeMap, EdgesAndCornersHaveOneFaceAndMeetTheirNeighbour) {
     }
 }
 
+// docs/09_environment.md's worked example: d = (0.9, 0.3, 0.45) has its
+// largest part along x, so it lands on +x; divided by 0.9, z gives
+// u = (0.5 + 1) / 2 = 0.75 and y gives v = (1/3 + 1) / 2 = 2/3. In a face of
+// 8 texels that is texel (6, 5); the lat-long point of the same direction
+// is u = 1/2 + atan2(0.9, -0.45) / 2 pi = 0.8238, v = 1/2 + asin(0.3 / 1.05) / pi = 0.5922.
+TEST(WorkedExample, TheFaceAndTheLatLongPointOfThePage) {
+    const FacePoint p = face_point({0.9, 0.3, 0.45});
+    EXPECT_EQ(p.face, Face::px);
+    EXPECT_NEAR(p.u, 0.75, 1e-12);
+    EXPECT_NEAR(p.v, 2.0 / 3, 1e-12);
+    EXPECT_EQ(static_cast<int>(p.u * 8), 6);
+    EXPECT_EQ(static_cast<int>(p.v * 8), 5);
+    const rl::dvec2 q = latlong_point({0.9, 0.3, 0.45});
+    EXPECT_NEAR(q.x, 0.8238, 5e-5);
+    EXPECT_NEAR(q.y, 0.5922, 5e-5);
+}
+
 TEST(CubeMap, ZeroAndNonFiniteDirectionsHaveAPlace) {
     for (rl::dvec3 d : {rl::dvec3{0, 0, 0}, rl::dvec3{NAN, 0, 1}, rl::dvec3{INFINITY, 0, 0}}) {
         const FacePoint p = face_point(d);
