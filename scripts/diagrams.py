@@ -1049,11 +1049,11 @@ def cube_faces(out):
     hit = (1.0, -dz / dx)
     left.annotate("", hit, (0, 0), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.6))
     left.plot(*hit, "o", color=ACCENT, ms=5)
-    left.text(0.15, -0.02, "d = (0.9, y, 0.45)", color=ACCENT, fontsize=8, rotation=-27, va="bottom")
+    left.text(0.45, -0.12, "d", color=ACCENT, fontsize=9, va="bottom")
     left.text(1.12, hit[1] - 0.05, "z / x = 0.5\nu = (0.5 + 1) / 2 = 0.75", fontsize=8,
               color=ACCENT, va="top")
-    left.text(0, -1.55, "seen from above: the largest |component| picks the face,\n"
-              "the other two divided by it place the point on it (dashed: the ties)",
+    left.text(0, -1.55, "seen from above, d = (0.9, y, 0.45): the largest |component| picks the\n"
+              "face, the other two divided by it place the point on it (dashed: the ties)",
               ha="center", fontsize=8)
     bare(left, (-1.8, 2.6), (-1.9, 1.5))
     # Right: the six faces unfolded around -z, each as seen from inside, v up.
@@ -1088,15 +1088,16 @@ def latlong(out):
     axes.text(-0.05, 0.0, "down (v = 0)", ha="right", va="center", fontsize=8)
     # The top row: all of it is one point of the sphere.
     axes.add_patch(Rectangle((0, 15 / 16), 2, 1 / 16, facecolor="#f3c9bd", edgecolor=ACCENT, lw=0.8))
-    axes.text(1.0, 1.08, "the top row of texels: one point, the zenith, stretched over the full width",
-              ha="center", fontsize=8, color=ACCENT)
+    axes.text(1.0, 1.08, "the top edge (v = 1) is one point, the zenith, stretched over the full width;\n"
+              "the row of texels under it is a thin cap around that point", ha="center", fontsize=8,
+              color=ACCENT)
     axes.annotate("", (2.0, 0.3), (1.9, 0.3), arrowprops=dict(arrowstyle="->", color=LINE))
     axes.annotate("", (0.0, 0.3), (0.1, 0.3), arrowprops=dict(arrowstyle="->", color=LINE))
     axes.text(1.0, 0.3, "u = 0 and u = 1 are the same longitude: the seam wraps", ha="center",
               fontsize=8, color=LINE)
     axes.text(1.0, -0.42, "u = 1/2 + atan2(x, -z) / 2 pi          v = 1/2 + asin(y) / pi",
               ha="center", fontsize=9)
-    bare(axes, (-0.5, 2.2), (-0.55, 1.2))
+    bare(axes, (-0.5, 2.2), (-0.55, 1.3))
     save(figure, out, "09_latlong.svg")
 
 

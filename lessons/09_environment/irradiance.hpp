@@ -5,7 +5,7 @@
 // harmonics (the environment's 1, 4 or 9 smoothest components, which the
 // cosine window keeps almost whole), a small cube map of E computed by brute
 // force, or Monte Carlo rays at each pixel. Derivation and pictures:
-// docs/09_environment.md#irradiance.
+// docs/09_environment.md#diffuse-light-irradiance-three-ways.
 //
 //   const environment::ShLight sh = environment::project_sh(cube, 3);
 //   const rl::vec3 e = environment::irradiance(sh, normal);            // 9 numbers per channel

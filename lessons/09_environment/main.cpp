@@ -86,7 +86,8 @@ int main(int argc, char** argv) {
             "filter) built in %.1f ms; frame (with the sky and the %s tone map) in %.1f ms; into "
             "%s\n",
             models.size(), counts.faces, counts.fragments, environment::name(options.material),
-            env_options.source.c_str(), environment::name(env.layout()), env_options.size,
+            env_options.source.c_str(), environment::name(env.layout()),
+            env.cube() ? env.cube()->size() : env.latlong()->height(),
             environment::name(env.filter()), map_ms.count(), environment::name(exposure.curve),
             frame_ms.count(), output.c_str());
         return 0;

@@ -3,7 +3,7 @@
 // the sky's horizon is about 1), defined analytically so that the lab knows
 // the exact answer in any direction, and the maps of cube_map.hpp and
 // latlong_map.hpp can be scored against it. Derivation and pictures:
-// docs/09_environment.md#radiance.
+// docs/09_environment.md#radiance-and-irradiance.
 //
 //   const environment::Sky sky = environment::default_sky();
 //   const rl::dvec3 light = environment::radiance(sky, {0, 1, 0});  // the zenith
