@@ -41,11 +41,14 @@ rl::dvec3 radiance(const Sky& sky, rl::dvec3 d) {
     rl::dvec3 ground = sky.ground;
     if (sky.checker > 0 && d.y < 0) {
         // Where the ray meets the plane one unit below: (x, z) / -y.
+        // Near the horizon (x, z) run off towards infinity: past 10^15 squares
+        // the checker is averaged away anyway, and the integer square would
+        // not fit a long long.
         const double x = d.x / -d.y / sky.checker, z = d.z / -d.y / sky.checker;
-        const bool dark =
+        if (std::fabs(x) < 1e15 && std::fabs(z) < 1e15 &&
             (static_cast<long long>(std::floor(x)) + static_cast<long long>(std::floor(z))) % 2 !=
-            0;
-        if (std::fabs(x) < 1e15 && std::fabs(z) < 1e15 && dark) ground = sky.ground_dark;
+                0)
+            ground = sky.ground_dark;
     }
     rl::dvec3 out = air * (1 - ground_share) + ground * ground_share;
     // The sun and its corona, above the horizon only.

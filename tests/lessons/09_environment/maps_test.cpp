@@ -178,6 +178,10 @@ TEST(Sky, ZenithHorizonGroundAndSun) {
     EXPECT_EQ(next.x, sky.ground_dark.x);
     const rl::dvec3 sun = radiance(sky, sky.sun_direction);
     EXPECT_GT(sun.x, sky.sun.x);  // the disc, plus the corona and the sky under it
+    // Just below the horizon the checker's squares run off to infinity: a
+    // defined colour, not an integer overflow.
+    const rl::dvec3 grazing = radiance(sky, {1, -1e-300, 0.3});
+    EXPECT_TRUE(std::isfinite(grazing.x));
     EXPECT_EQ(radiance(sky, {0, 0, 0}).x, 0.0);
     EXPECT_EQ(radiance(sky, {NAN, 1, 0}).x, 0.0);
     EXPECT_EQ(radiance(sky, {0, 2, 0}).x, zenith.x);  // any length
