@@ -64,11 +64,12 @@ int main(int argc, char** argv) {
         rl::check_image_output(output);
         options.skybox = !no_skybox;
         std::vector<std::string> warnings;
+        // The models first: a model the loader refuses costs no map.
+        const auto [models, camera] =
+            environment::load_scene(view, tangents, width, height, warnings);
         const auto start = std::chrono::steady_clock::now();
         const environment::Environment env = environment::make_environment(env_options, warnings);
         const auto built = std::chrono::steady_clock::now();
-        const auto [models, camera] =
-            environment::load_scene(view, tangents, width, height, warnings);
         rl::print_warnings("09_environment", warnings);
         if (options.map_filter == textures::Filter::trilinear)
             normal_mapping::build_mip_levels(models);

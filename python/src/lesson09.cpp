@@ -41,10 +41,10 @@ void bind_lesson09(py::module_ m) {
             const perspective::ViewOptions view = view_options(models, camera, default_light());
             Result r;
             py::gil_scoped_release unlocked;
+            const auto scene = environment::load_scene(view, frames, width, height, r.warnings);
+            check_signals();
             const environment::Environment env =
                 environment::make_environment(env_options, r.warnings);
-            check_signals();
-            const auto scene = environment::load_scene(view, frames, width, height, r.warnings);
             check_signals();
             environment::LightTarget frame = environment::light_target(width, height);
             const perspective::PipelineCounts counts =
