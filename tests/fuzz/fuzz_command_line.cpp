@@ -24,8 +24,8 @@ namespace {
 // is legal and slow) and output paths (the fuzzer must not write anywhere).
 // Lesson 09 (FUZZ_SMALL_MAP) also builds an environment map of --map-size
 // texels a side (up to 2048: seconds of work under the sanitizers).
-const std::set<std::string_view> kOwned = {"-o",      "--output", "--png", "--depth-out",
-                                           "--width", "--height", "--diff",
+const std::set<std::string_view> kOwned = {"-o",        "--output", "--png",  "--depth-out",
+                                           "--width",   "--height", "--diff",
 #ifdef FUZZ_SMALL_MAP
                                            "--map-size"
 #endif
