@@ -65,8 +65,11 @@ ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
         covered.add(rl::vec3{-1, -1, -1});
         covered.add(rl::vec3{1, 1, 1});
     }
-    return render_shadow_map(options.casters ? models : std::vector<normal_mapping::MappedModel>{},
-                             light_view(options.light, covered, scene), options.map);
+    // (Chosen by reference: the ternary of a reference and a temporary would
+    // copy every model, meshes and textures, into a temporary.)
+    static const std::vector<normal_mapping::MappedModel> nothing;
+    const std::vector<normal_mapping::MappedModel>& casters = options.casters ? models : nothing;
+    return render_shadow_map(casters, light_view(options.light, covered, scene), options.map);
 }
 
 SplitLighting split_lighting(const ShadowOptions& options) {
