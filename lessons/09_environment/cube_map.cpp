@@ -1,5 +1,7 @@
 #include "cube_map.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -146,20 +148,23 @@ CubeMap cube_map(const std::function<rl::dvec3(rl::dvec3)>& radiance, int size, 
                                     " texels (1 to 8192), " + std::to_string(samples) +
                                     " samples a side (1 to 64)");
     std::array<rl::HdrImage, 6> faces;
-    for (Face f : kFaces) {
-        rl::HdrImage image(size, size);
-        for (int j = 0; j < size; ++j)
-            for (int i = 0; i < size; ++i) {
-                rl::dvec3 sum{0, 0, 0};
-                for (int b = 0; b < samples; ++b)
-                    for (int a = 0; a < samples; ++a)
-                        sum += radiance(face_direction(f, (i + (a + 0.5) / samples) / size,
-                                                       (j + (b + 0.5) / samples) / size));
-                const rl::vec3 mean = rl::cast<float>(sum / static_cast<double>(samples * samples));
-                image.set(i, j, {mean.x, mean.y, mean.z, 1});
-            }
-        faces[static_cast<std::size_t>(f)] = std::move(image);
-    }
+    for (rl::HdrImage& face : faces) face = rl::HdrImage(size, size);
+    // Every texel is its own sum, so rows go to both cores in any order and
+    // the map is the same: `radiance` must be safe to call from two threads.
+    tbb::parallel_for(0, 6 * size, [&](int row) {
+        const Face f = kFaces[static_cast<std::size_t>(row / size)];
+        const int j = row % size;
+        rl::HdrImage& image = faces[static_cast<std::size_t>(f)];
+        for (int i = 0; i < size; ++i) {
+            rl::dvec3 sum{0, 0, 0};
+            for (int b = 0; b < samples; ++b)
+                for (int a = 0; a < samples; ++a)
+                    sum += radiance(face_direction(f, (i + (a + 0.5) / samples) / size,
+                                                   (j + (b + 0.5) / samples) / size));
+            const rl::vec3 mean = rl::cast<float>(sum / static_cast<double>(samples * samples));
+            image.set(i, j, {mean.x, mean.y, mean.z, 1});
+        }
+    });
     return CubeMap(std::move(faces));
 }
 

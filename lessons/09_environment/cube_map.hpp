@@ -72,6 +72,8 @@ class CubeMap {
 
 // A function's cube map: each texel the mean of `samples`² radiances spread
 // evenly over it (more than one: the sun's disc covers part of a texel).
+// Rows are filled on all cores, so `radiance` is called from several
+// threads at once.
 CubeMap cube_map(const std::function<rl::dvec3(rl::dvec3)>& radiance, int size, int samples = 4);
 CubeMap cube_map(Analytic which, int size, int samples = 4);
 

@@ -46,17 +46,21 @@ float Environment::level_for(double radians) const {
     return level > 0 && std::isfinite(level) ? static_cast<float>(level) : 0.0f;
 }
 
+rl::vec3 Environment::blurred(rl::vec3 direction, float level) const {
+    return cube_ ? cube_->sample(direction, MapFilter::trilinear, level)
+                 : latlong_->sample(direction, MapFilter::trilinear, level);
+}
+
 Environment make_environment(const EnvironmentOptions& options,
                              std::vector<std::string>& warnings) {
     if (options.size < 1 || options.size > kMaxMapSize)
         throw std::invalid_argument("--map-size: " + std::to_string(options.size) +
                                     " is outside 1 to " + std::to_string(kMaxMapSize));
-    if (options.source == "sky" || options.source == "studio") {
-        const Analytic which = options.source == "sky" ? Analytic::sky : Analytic::studio;
+    if (const std::optional<Analytic> which = rl::from_name(options.source, kAnalytics)) {
         const int samples = texel_samples(options.size);
         if (options.layout == Layout::cube)
-            return Environment(cube_map(which, options.size, samples), options.filter);
-        return Environment(latlong_map(which, options.size, samples), options.filter);
+            return Environment(cube_map(*which, options.size, samples), options.filter);
+        return Environment(latlong_map(*which, options.size, samples), options.filter);
     }
     LatLongMap file(cleaned(rl::load_hdr_image(options.source), options.source, warnings));
     if (options.layout == Layout::latlong) return Environment(std::move(file), options.filter);

@@ -32,7 +32,7 @@ inline int texel_samples(int size) {
 }
 
 struct EnvironmentOptions {
-    std::string source = "sky";  // "sky", "studio" or the path of a lat-long .hdr
+    std::string source = "sky";  // "sky", "studio", "white" or the path of a lat-long .hdr
     Layout layout = Layout::cube;
     // A cube face's side, or a lat-long map's height (its width is twice
     // that). 512: the lab's 09_maps, where the sky at 800x800 stops gaining
@@ -53,6 +53,9 @@ class Environment {
         return cube_ ? cube_->sample(direction, filter_, level)
                      : latlong_->sample(direction, filter_, level);
     }
+    // The radiance from `direction` read trilinearly at mip level `level`,
+    // whatever the filter: a wide average, for a prefilter's samples.
+    rl::vec3 blurred(rl::vec3 direction, float level) const;
     // The angle one texel of level 0 spans at its face's or row's middle,
     // radians: a cube face's 90 degrees over its size, or 180 over the
     // lat-long map's height.

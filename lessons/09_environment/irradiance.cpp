@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphere_sampling.hpp"
+
 namespace environment {
 
 namespace {
@@ -22,17 +24,6 @@ rl::dvec3 unit_or_up(rl::vec3 n) {
 // seen from the cube's centre: atan(x y / sqrt(x^2 + y^2 + 1)).
 double corner_angle(double x, double y) {
     return std::atan2(x * y, std::sqrt(x * x + y * y + 1));
-}
-
-// A 32-bit hash step (PCG's output function): well-mixed bits from a counter.
-std::uint32_t hash(std::uint32_t v) {
-    v = v * 747796405u + 2891336453u;
-    v = ((v >> ((v >> 28u) + 4u)) ^ v) * 277803737u;
-    return (v >> 22u) ^ v;
-}
-
-double unit_interval(std::uint32_t bits) {
-    return (bits >> 8) * (1.0 / 16777216.0);  // 24 bits: [0, 1)
 }
 
 }  // namespace
@@ -138,9 +129,7 @@ CubeMap irradiance_map(const CubeMap& source, int size) {
 rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source, rl::vec3 normal,
                                 int samples, std::uint32_t seed) {
     const rl::dvec3 n = unit_or_up(normal);
-    // A frame around n: two unit tangents t and b.
-    const rl::dvec3 helper = std::fabs(n.y) < 0.9 ? rl::dvec3{0, 1, 0} : rl::dvec3{1, 0, 0};
-    const rl::dvec3 t = rl::normalize(rl::cross(helper, n)), b = rl::cross(n, t);
+    const Frame frame(n);
     rl::dvec3 sum{0, 0, 0};
     const int count = std::max(samples, 1);
     for (int s = 0; s < count; ++s) {
@@ -149,7 +138,7 @@ rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source,
         const std::uint32_t h = hash(seed ^ hash(static_cast<std::uint32_t>(s)));
         const double r = std::sqrt(unit_interval(h)), phi = 2 * kPi * unit_interval(hash(h));
         const double x = r * std::cos(phi), y = r * std::sin(phi);
-        const rl::dvec3 d = t * x + b * y + n * std::sqrt(std::max(0.0, 1 - x * x - y * y));
+        const rl::dvec3 d = frame.to_world({x, y, std::sqrt(std::max(0.0, 1 - x * x - y * y))});
         sum += rl::cast<double>(source(rl::cast<float>(d)));
     }
     return rl::cast<float>(sum * (kPi / count));

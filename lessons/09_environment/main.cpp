@@ -1,5 +1,5 @@
 // Lesson 09: light from the whole environment. The models (lesson 07's, with
-// their normal maps) as mirrors or glass, lit by a sky, a studio or a
+// their normal maps) as mirrors, glass, rough metal or plastic, lit by a sky, a studio or a
 // Radiance .hdr file stored as a cube or a lat-long map, the sky behind them;
 // linear HDR light, then the exposure, a tone map and sRGB. Read
 // docs/09_environment.md beside it.
@@ -14,8 +14,8 @@
 
 int main(int argc, char** argv) {
     CLI::App app{
-        "Lesson 09, environment: mirrors and glass lit by a sky, a studio or an .hdr file, as a "
-        "cube or a lat-long map, with the sky behind them, tone mapped."};
+        "Lesson 09, environment: mirrors, glass, rough metal and plastic lit by a sky, a studio or "
+        "an .hdr file, as a cube or a lat-long map, with the sky behind them, tone mapped."};
     rl::ImageOptions image_options{"09_environment.tga"};
     perspective::ViewOptions view;
     environment::EnvironmentOptions env_options;
@@ -25,8 +25,10 @@ int main(int argc, char** argv) {
     perspective::add_view_options(app, view, "the globe and the torus from obj/");
     app.remove_option(app.get_option("--light"));  // the environment is the light here
     rl::add_image_options(app, image_options);
-    app.add_option("--environment", env_options.source,
-                   "The light around the scene: sky, studio, or the path of a lat-long .hdr file")
+    app.add_option(
+           "--environment", env_options.source,
+           "The light around the scene: sky, studio, white (a furnace: radiance 1 everywhere), "
+           "or the path of a lat-long .hdr file")
         ->capture_default_str();
     rl::add_method_option(app, "--map", env_options.layout, environment::kLayouts,
                           "How the environment is stored");
@@ -36,12 +38,46 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     rl::add_method_option(app, "--filter", env_options.filter, environment::kMapFilters,
                           "How the map is read between texels");
-    rl::add_method_option(app, "--material", options.material, environment::kMaterials,
-                          "What the models are made of");
+    std::vector<float> metal;
+    environment::Material material = environment::Material::mirror;
+    CLI::Option* material_option =
+        rl::add_method_option(app, "--material", material, environment::kMaterials,
+                              "What every model is made of")
+            ->default_str("the first model mirror, the others rough-metal");
+    app.add_option("--roughness", options.roughness,
+                   "How rough rough-metal and plastic are: 0 (a mirror) to 1")
+        ->capture_default_str()
+        ->check(rl::finite_number(0, 1));
+    app.add_option("--metal", metal,
+                   "The rough metal's head-on reflectance, R G B from 0 to 1 (gold: 1 0.71 0.29; "
+                   "white, 1 1 1, for the white furnace)")
+        ->expected(3)
+        ->check(rl::finite_number(0, 1));
+    rl::add_method_option(app, "--glossy", options.glossy, environment::kGlossies,
+                          "How rough-metal and plastic gather the light they reflect");
+    bool single_scatter = false;
+    app.add_flag("--single-scatter", single_scatter,
+                 "Leave out the light that bounces between a rough surface's facets (the "
+                 "microfacet BRDF's lost energy)");
+    app.add_option("--glossy-levels", options.prefilter.levels,
+                   "Roughness steps of the split sum's blurred maps (2 to " +
+                       std::to_string(environment::kMaxGlossyLevels) + ")")
+        ->capture_default_str()
+        ->check(CLI::Range(2, environment::kMaxGlossyLevels));
+    app.add_option("--glossy-size", options.prefilter.size,
+                   "The largest blurred map's face, in texels (8 to " +
+                       std::to_string(environment::kMaxGlossySize) + ")")
+        ->capture_default_str()
+        ->check(CLI::Range(8, environment::kMaxGlossySize));
+    app.add_option("--glossy-samples", options.prefilter.samples,
+                   "GGX rays per texel of the blurred maps (1 to " +
+                       std::to_string(environment::kMaxGlossySamples) + ")")
+        ->capture_default_str()
+        ->check(CLI::Range(1, environment::kMaxGlossySamples));
     rl::add_method_option(app, "--irradiance", options.irradiance, environment::kIrradiances,
                           "How a diffuse surface finds the light arriving from its hemisphere");
     app.add_option("--samples", options.samples,
-                   "Monte Carlo's rays per pixel (--irradiance monte-carlo; 1 to " +
+                   "Monte Carlo's rays per pixel (--irradiance or --glossy monte-carlo; 1 to " +
                        std::to_string(environment::kMaxIrradianceSamples) + ")")
         ->capture_default_str()
         ->check(CLI::Range(1, environment::kMaxIrradianceSamples));
@@ -63,12 +99,16 @@ int main(int argc, char** argv) {
     return rl::guarded_main("09_environment", [&] {
         rl::check_image_output(output);
         options.skybox = !no_skybox;
+        options.multiple_scattering = !single_scatter;
+        if (material_option->count() > 0) options.material = material;
+        if (!metal.empty()) options.metal = {metal[0], metal[1], metal[2]};
         std::vector<std::string> warnings;
         // The models first: a model the loader refuses costs no map.
         const auto [models, camera] =
             environment::load_scene(view, tangents, width, height, warnings);
         const auto start = std::chrono::steady_clock::now();
         const environment::Environment env = environment::make_environment(env_options, warnings);
+        const environment::PreparedLight light(env, options, models.size());
         const auto built = std::chrono::steady_clock::now();
         rl::print_warnings("09_environment", warnings);
         if (options.map_filter == textures::Filter::trilinear)
@@ -76,7 +116,7 @@ int main(int argc, char** argv) {
         const auto drawing = std::chrono::steady_clock::now();
         environment::LightTarget frame = environment::light_target(width, height);
         const perspective::PipelineCounts counts =
-            environment::render(models, camera, env, options, frame);
+            environment::render(models, camera, light, options, frame);
         const rl::Image picture = environment::tone_mapped(frame.colour(), exposure);
         const auto done = std::chrono::steady_clock::now();
         rl::save_image(output, picture);
@@ -84,9 +124,11 @@ int main(int argc, char** argv) {
                                                         frame_ms = done - drawing;
         std::printf(
             "%zu models: %zu faces, %zu fragments shaded, %s; %s environment as a %s map (%d, %s "
-            "filter) built in %.1f ms; frame (with the sky and the %s tone map) in %.1f ms; into "
+            "filter) and its light built in %.1f ms; frame (with the sky and the %s tone map) in "
+            "%.1f ms; into "
             "%s\n",
-            models.size(), counts.faces, counts.fragments, environment::name(options.material),
+            models.size(), counts.faces, counts.fragments,
+            options.material ? environment::name(*options.material) : "mirror and rough-metal",
             env_options.source.c_str(), environment::name(env.layout()),
             env.cube() ? env.cube()->size() : env.latlong()->height(),
             environment::name(env.filter()), map_ms.count(), environment::name(exposure.curve),

@@ -1,6 +1,8 @@
 #include "scene.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "rasterlab/transform.hpp"
 
@@ -66,10 +68,45 @@ void draw_skybox(const Environment& environment, const perspective::Camera& came
 }
 // [/doc:skybox]
 
+SurfaceMaterial material_of(const RenderOptions& options, std::size_t index) {
+    const Material default_look = index == 0 ? Material::mirror : Material::rough_metal;
+    return {.material = options.material.value_or(default_look),
+            .roughness = options.roughness,
+            .metal = options.metal,
+            .glossy = options.glossy,
+            .multiple_scattering = options.multiple_scattering,
+            .samples = options.samples};
+}
+
+PreparedLight::PreparedLight(const Environment& environment, const RenderOptions& options,
+                             std::size_t model_count)
+    : environment_(&environment) {
+    if (!(options.roughness >= 0 && options.roughness <= 1))
+        throw std::invalid_argument("--roughness: " + std::to_string(options.roughness) +
+                                    " is outside 0 to 1");
+    if (options.samples < 1 || options.samples > kMaxIrradianceSamples)
+        throw std::invalid_argument("--samples: " + std::to_string(options.samples) +
+                                    " is outside 1 to " + std::to_string(kMaxIrradianceSamples));
+    bool needs_diffuse = false, needs_glossy = false;
+    for (std::size_t i = 0; i < model_count; ++i) {
+        const Material m = material_of(options, i).material;
+        needs_glossy |= is_glossy(m);
+        needs_diffuse |= is_glossy(m) || m == Material::diffuse;
+    }
+    if (needs_diffuse)
+        diffuse_.emplace([env = &environment](rl::vec3 d) { return env->sample(d); },
+                         options.irradiance, options.samples);
+    if (needs_glossy && options.glossy == Glossy::split_sum)
+        glossy_.emplace(environment, options.prefilter);
+}
+
+EnvironmentLight PreparedLight::light() const {
+    return {environment_, diffuse_ ? &*diffuse_ : nullptr, glossy_ ? &*glossy_ : nullptr};
+}
+
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera,
-                                   const Environment& environment, const RenderOptions& options,
-                                   LightTarget& frame) {
+                                   const perspective::Camera& camera, const PreparedLight& light,
+                                   const RenderOptions& options, LightTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     normal_mapping::RenderOptions surfaces;
@@ -78,23 +115,27 @@ perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel
     textures::SamplerState sampler;  // the albedo's: sRGB bytes decoded to linear light
     sampler.filter = options.map_filter;
     sampler.encoding = &shading::srgb_texels();
-    std::optional<DiffuseLight> diffuse;
-    if (options.material == Material::diffuse)
-        diffuse.emplace([&](rl::vec3 d) { return environment.sample(d); }, options.irradiance,
-                        options.samples);
     perspective::PipelineCounts counts;
-    for (const normal_mapping::MappedModel& m : models) {
+    for (std::size_t i = 0; i < models.size(); ++i) {
+        const normal_mapping::MappedModel& m = models[i];
         const std::optional<shading::Placed> p = shading::place(
             m.lit, view_projection, camera, surfaces.lighting, sampler, true, counts);
         if (!p) continue;
-        counts += perspective::draw(
-            p->surface,
-            EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces), environment,
-                              options.material, diffuse ? &*diffuse : nullptr},
-            frame, options.pipeline);
+        counts += perspective::draw(p->surface,
+                                    EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces),
+                                                      light.light(), material_of(options, i)},
+                                    frame, options.pipeline);
     }
-    if (options.skybox) draw_skybox(environment, camera, frame);
+    if (options.skybox) draw_skybox(light.environment(), camera, frame);
     return counts;
+}
+
+perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                   const perspective::Camera& camera,
+                                   const Environment& environment, const RenderOptions& options,
+                                   LightTarget& frame) {
+    return render(models, camera, PreparedLight(environment, options, models.size()), options,
+                  frame);
 }
 
 }  // namespace environment

@@ -31,10 +31,18 @@ perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     int height, std::vector<std::string>& warnings);
 
 struct RenderOptions {
-    Material material = Material::mirror;
-    // For Material::diffuse. The convolved map: the lab's 09_irradiance
-    // finds it 0.8% from the truth on average where 9 harmonics are 4.7%
-    // off, at a time per pixel inside the harmonics' spread.
+    // Every model's material; nothing: the default scene's look, the first
+    // model a mirror and the others rough metal.
+    std::optional<Material> material;
+    float roughness = 0.35f;   // rough metal and plastic
+    rl::vec3 metal = kGoldF0;  // the rough metal's head-on reflectance
+    Glossy glossy = Glossy::split_sum;
+    bool multiple_scattering = true;
+    GlossyOptions prefilter;  // the split sum's blurred maps
+    // For diffuse light (and the light glossy surfaces bounce between
+    // their facets). The convolved map: the lab's 09_irradiance finds it
+    // 0.8% from the truth on average where 9 harmonics are 4.7% off, at a
+    // time per pixel inside the harmonics' spread.
     Irradiance irradiance = Irradiance::convolved;
     int samples = 64;  // Monte Carlo's rays per pixel
     normal_mapping::NormalMap normal_map = normal_mapping::NormalMap::tangent;
@@ -42,6 +50,9 @@ struct RenderOptions {
     bool skybox = true;
     perspective::PipelineOptions pipeline;
 };
+
+// Model `index`'s material under `options`.
+SurfaceMaterial material_of(const RenderOptions& options, std::size_t index);
 
 // The rays from the eye through a width x height image: the camera's frame,
 // found once per frame. ray(x, y) is the unit world direction through the
@@ -69,7 +80,29 @@ inline rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int heig
 void draw_skybox(const Environment& environment, const perspective::Camera& camera,
                  LightTarget& frame);
 
+// The light the materials of `options` need for `model_count` models,
+// prepared once per environment (the irradiance, the split sum's blurred
+// maps). Throws std::invalid_argument for a roughness outside 0..1, a
+// sample count outside 1..kMaxIrradianceSamples, or blurred maps' options
+// out of their range.
+class PreparedLight {
+  public:
+    PreparedLight(const Environment& environment, const RenderOptions& options,
+                  std::size_t model_count);
+    const Environment& environment() const { return *environment_; }
+    EnvironmentLight light() const;
+
+  private:
+    const Environment* environment_;
+    std::optional<DiffuseLight> diffuse_;
+    std::optional<GlossyMap> glossy_;
+};
+
 // The models, then (if options.skybox) the sky.
+perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                   const perspective::Camera& camera, const PreparedLight& light,
+                                   const RenderOptions& options, LightTarget& frame);
+// The same, preparing the light first.
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
                                    const perspective::Camera& camera,
                                    const Environment& environment, const RenderOptions& options,

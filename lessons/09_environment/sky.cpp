@@ -76,8 +76,15 @@ rl::dvec3 radiance(const Studio& studio, rl::dvec3 d) {
 }
 
 rl::dvec3 radiance(Analytic which, rl::dvec3 direction) {
-    return which == Analytic::sky ? radiance(default_sky(), direction)
-                                  : radiance(Studio{}, direction);
+    switch (which) {
+        case Analytic::sky:
+            return radiance(default_sky(), direction);
+        case Analytic::studio:
+            return radiance(Studio{}, direction);
+        case Analytic::white:
+            break;
+    }
+    return {1, 1, 1};
 }
 
 }  // namespace environment

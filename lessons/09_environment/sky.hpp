@@ -48,10 +48,12 @@ struct Studio {
     rl::dvec3 softbox{12, 12, 11.5};
 };
 
-enum class Analytic { sky, studio };
-inline constexpr std::array<rl::Named<Analytic>, 2> kAnalyticNames = {
-    {{Analytic::sky, "sky"}, {Analytic::studio, "studio"}}};
-inline constexpr std::array<Analytic, 2> kAnalytics = rl::values_of(kAnalyticNames);
+// `white`: radiance 1 from every direction, the "white furnace": a surface
+// that neither makes nor loses light vanishes into it.
+enum class Analytic { sky, studio, white };
+inline constexpr std::array<rl::Named<Analytic>, 3> kAnalyticNames = {
+    {{Analytic::sky, "sky"}, {Analytic::studio, "studio"}, {Analytic::white, "white"}}};
+inline constexpr std::array<Analytic, 3> kAnalytics = rl::values_of(kAnalyticNames);
 inline const char* name(Analytic value) {
     return rl::name_in(kAnalyticNames, value);
 }

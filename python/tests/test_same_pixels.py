@@ -185,6 +185,25 @@ def test_lesson09_diffuse(programs, irradiance):
          programs.image("09", "--material", "diffuse", "--irradiance", irradiance, "--samples", 8,
                         "--map-size", 32, *SIZE))
 
+
+@pytest.mark.parametrize("glossy", ["split-sum", "monte-carlo"])
+def test_lesson09_glossy(programs, glossy):
+    same(rasterlab.lesson09.render(material="plastic", roughness=0.6, glossy=glossy, samples=4,
+                                   multiple_scattering=False, glossy_levels=3, glossy_size=16,
+                                   glossy_samples=8, map_size=32, filter="trilinear", **SMALL),
+         programs.image("09", "--material", "plastic", "--roughness", 0.6, "--glossy", glossy,
+                        "--samples", 4, "--single-scatter", "--glossy-levels", 3,
+                        "--glossy-size", 16, "--glossy-samples", 8, "--map-size", 32,
+                        "--filter", "trilinear", *SIZE))
+
+
+def test_lesson09_white_metal(programs):
+    same(rasterlab.lesson09.render(environment="white", material="rough-metal", metal=[1, 1, 1],
+                                   roughness=1, map_size=16, glossy_size=16, **SMALL),
+         programs.image("09", "--environment", "white", "--material", "rough-metal", "--metal",
+                        1, 1, 1, "--roughness", 1, "--map-size", 16, "--glossy-size", 16, *SIZE))
+
+
 @pytest.mark.parametrize("threads", [1, 2])
 def test_lesson12(programs, threads):
     same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),
