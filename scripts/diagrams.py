@@ -26,6 +26,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   09_cube_faces.svg          a direction's face and place, seen from above; the six faces unfolded
   09_latlong.svg             the lat-long map: longitude across, latitude up, the pole's row, the seam
   09_reflect_refract.svg     reflection and refraction at glass, with Snell's angles and Fresnel's share
+  09_microfacets.svg         a rough surface as tiny mirrors: the facets facing h, one shadowed, one masked
+  09_lobe_lean.svg           GGX's one-bounce lobe seen head-on and at 75 degrees, against the mirror direction
   12_tiles_and_bins.svg      a frame cut into tiles, each tile's bin of triangles, the owning thread
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
@@ -1128,6 +1130,99 @@ def reflect_refract(out):
     save(figure, out, "09_reflect_refract.svg")
 
 
+def microfacets(out):
+    figure, axes = plt.subplots(figsize=(6.5, 3.6))
+    # A saw-tooth surface: facet k runs from x[k] to x[k + 1].
+    xs = [-2.4 + 0.4 * k for k in range(13)]
+    ys = [0.0, 0.28, 0.02, 0.2, -0.05, 0.32, 0.05, 0.12, -0.02, 0.3, 0.0, 0.18, 0.02]
+    axes.add_patch(Polygon(list(zip(xs, ys)) + [(xs[-1], -0.6), (xs[0], -0.6)], color=SOFT))
+    axes.plot(xs, ys, color=INK, lw=1.2)
+    axes.plot([-2.5, 2.5], [0.08, 0.08], color=INK, lw=0.8, ls=":")
+    axes.annotate("", (0, 1.55), (0, 0.08), arrowprops=dict(arrowstyle="->", color=INK, lw=1.4))
+    axes.text(0.05, 1.5, "n (the surface's)", fontsize=8)
+    v = (-math.sin(math.radians(40)), math.cos(math.radians(40)))
+    l = (math.sin(math.radians(62)), math.cos(math.radians(62)))
+    axes.annotate("", (1.5 * v[0], 0.08 + 1.5 * v[1]), (0, 0.08),
+                  arrowprops=dict(arrowstyle="->", color=LINE, lw=1.6))
+    axes.text(1.5 * v[0] - 0.05, 0.1 + 1.5 * v[1], "v (to the eye)", color=LINE, fontsize=8, ha="right")
+    axes.annotate("", (1.5 * l[0], 0.08 + 1.5 * l[1]), (0, 0.08),
+                  arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.6))
+    axes.text(1.5 * l[0] + 0.05, 0.1 + 1.5 * l[1], "l (to the light)", color=ACCENT, fontsize=8)
+    hx, hy = v[0] + l[0], v[1] + l[1]
+    norm = math.hypot(hx, hy)
+    h = (hx / norm, hy / norm)
+    axes.annotate("", (1.2 * h[0], 0.08 + 1.2 * h[1]), (0, 0.08),
+                  arrowprops=dict(arrowstyle="->", color="#208040", lw=1.4, ls="--"))
+    axes.text(1.2 * h[0] + 0.05, 0.1 + 1.2 * h[1], "h", color="#208040", fontsize=9)
+    # The facets whose normals are closest to h mirror l into v: drawn green.
+    def facing(k):
+        dx, dy = xs[k + 1] - xs[k], ys[k + 1] - ys[k]
+        return (-dy * h[0] + dx * h[1]) / math.hypot(dx, dy)
+    for k in sorted(range(12), key=facing)[-3:]:
+        axes.plot(xs[k:k + 2], ys[k:k + 2], color="#208040", lw=3)
+    axes.text(-2.45, -0.35, "green: facets facing h (GGX's D counts them)", fontsize=7.5, color="#208040")
+    axes.text(-2.45, -0.5, "f = D G F / (4 (n.l)(n.v)): G takes out the facets hidden from l (shadowed) "
+              "or from v (masked);\nF is each facet's mirror share (Schlick)", fontsize=7.5, va="top")
+    axes.annotate("shadowed: a ridge\nblocks the light", (1.15, 0.1), (1.75, 0.45), fontsize=7.5,
+                  arrowprops=dict(arrowstyle="->", color=INK, lw=0.8))
+    axes.annotate("masked: the eye\ncannot see it", (-1.4, 0.12), (-2.3, 0.75), fontsize=7.5,
+                  arrowprops=dict(arrowstyle="->", color=INK, lw=0.8))
+    bare(axes, (-2.55, 2.55), (-0.85, 1.7))
+    save(figure, out, "09_microfacets.svg")
+
+
+def ggx_one_bounce(v_angle, l_angle, alpha):
+    """f(v, l) n.l for a white metal (F = 1) in the plane of v, n and l."""
+    if abs(l_angle) >= math.pi / 2:
+        return 0.0
+    nv, nl = math.cos(v_angle), math.cos(l_angle)
+    h_angle = 0.5 * (v_angle + l_angle)
+    nh = math.cos(h_angle)
+    a2 = alpha * alpha
+    d = a2 / (math.pi * (nh * nh * (a2 - 1) + 1) ** 2)
+
+    def lam(c):
+        return 0.5 * (math.sqrt(1 + a2 * (1 - c * c) / (c * c)) - 1)
+
+    g = 1 / (1 + lam(nv) + lam(nl))
+    return d * g / (4 * nv)
+
+
+def lobe_lean(out):
+    figure, panels = plt.subplots(1, 2, figsize=(6.5, 3.2))
+    for axes, view_degrees in zip(panels, (0, 75)):
+        v_angle = math.radians(-view_degrees)  # the eye on the left
+        alpha = 0.6 ** 2
+        angles = [math.radians(-89.5 + 0.5 * k) for k in range(359)]
+        values = [ggx_one_bounce(v_angle, a, alpha) for a in angles]
+        peak = max(values)
+        xs = [math.sin(a) * f / peak for a, f in zip(angles, values)]
+        ys = [math.cos(a) * f / peak for a, f in zip(angles, values)]
+        axes.fill(xs + [0], ys + [0], color=SOFT)
+        axes.plot(xs, ys, color=LINE, lw=1.4, label="the true lobe")
+        # The lobe's mean direction, each direction weighted by its value.
+        mean_x = sum(math.sin(a) * f for a, f in zip(angles, values))
+        mean_y = sum(math.cos(a) * f for a, f in zip(angles, values))
+        best = math.atan2(mean_x, mean_y)
+        r_angle = -v_angle
+        axes.plot([-1.1, 1.1], [0, 0], color=INK, lw=1.2)
+        axes.annotate("", (0, 1.05), (0, 0), arrowprops=dict(arrowstyle="->", color=INK, lw=1))
+        axes.text(0.03, 1.0, "n", fontsize=8)
+        axes.annotate("", (math.sin(v_angle), math.cos(v_angle)), (0, 0),
+                      arrowprops=dict(arrowstyle="->", color=INK, lw=1))
+        axes.text(math.sin(v_angle) - 0.02, math.cos(v_angle) + 0.03, "v", fontsize=8, ha="right")
+        axes.annotate("", (math.sin(r_angle), math.cos(r_angle)), (0, 0),
+                      arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.4, ls="--"))
+        axes.text(math.sin(r_angle) + 0.02, math.cos(r_angle), "r", fontsize=8, color=ACCENT)
+        axes.plot([0, 0.95 * math.sin(best)], [0, 0.95 * math.cos(best)], color=LINE, lw=1, ls=":")
+        axes.set_title(f"seen {view_degrees}° from n: r is {abs(math.degrees(r_angle)):.0f}° from n,\n"
+                       f"the lobe's mean {abs(math.degrees(best)):.0f}° (dotted)", fontsize=8)
+        bare(axes, (-1.15, 1.15), (-0.1, 1.15))
+    figure.text(0.5, 0.02, "roughness 0.6, white metal: f(v, l) n.l in the plane of v and n (blue).\n"
+                "The prefilter centres its lobe on r: right head-on, wrong at a slant.", ha="center", fontsize=7.5)
+    save(figure, out, "09_lobe_lean.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
@@ -1135,7 +1230,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path, cube_faces, latlong, reflect_refract):
+                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean):
         draw(out)
 
 

@@ -13,6 +13,7 @@
 //   const environment::SpecularShares s = environment::specular_shares({1, 0.71f, 0.29f}, ab);
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "rasterlab/vec.hpp"
@@ -85,6 +86,16 @@ class SplitSumTable {
 
 // The table, built the first time it is asked for (about 20 ms).
 const SplitSumTable& split_sum_table();
+
+// Where to read the blurred maps for a rough surface: the prefilter assumed
+// the eye on the normal, but seen at a slant a rough lobe leans from the
+// mirror direction r towards the normal n. Lagarde and de Rousiers' fit
+// (2014) of that lean: all the way to r for a mirror, to n for roughness 1.
+inline rl::vec3 dominant_direction(rl::vec3 n, rl::vec3 r, float roughness) {
+    const float smooth = 1 - roughness;
+    const float towards_r = smooth * (std::sqrt(smooth) + roughness);
+    return rl::normalize(n + (r - n) * towards_r);
+}
 
 // How much of the prefiltered radiance (`single`: one bounce, f0 scale +
 // bias) and of the cosine-weighted mean radiance E / pi (`multiple`: light

@@ -46,6 +46,17 @@ inline const char* name(Glossy value) {
     return rl::name_in(kGlossyNames, value);
 }
 
+// Which direction the split sum reads its blurred maps along: the mirror
+// direction (as the prefilter assumed), or the lobe's dominant direction,
+// leaning towards the normal the rougher the surface.
+enum class Lookup { dominant, mirror };
+inline constexpr std::array<rl::Named<Lookup>, 2> kLookupNames = {
+    {{Lookup::dominant, "dominant"}, {Lookup::mirror, "mirror"}}};
+inline constexpr std::array<Lookup, 2> kLookups = rl::values_of(kLookupNames);
+inline const char* name(Lookup value) {
+    return rl::name_in(kLookupNames, value);
+}
+
 inline constexpr float kGlassIor = 1.5f;
 // Gold's head-on reflectance in linear RGB (the rough metal's), and a
 // plastic's (any dielectric of index 1.5: 4%).
@@ -58,6 +69,7 @@ struct SurfaceMaterial {
     float roughness = 0.35f;   // rough metal and plastic
     rl::vec3 metal = kGoldF0;  // the rough metal's head-on reflectance
     Glossy glossy = Glossy::split_sum;
+    Lookup lookup = Lookup::dominant;
     bool multiple_scattering = true;  // put back the energy one bounce loses
     int samples = 64;                 // Monte Carlo's rays per pixel (diffuse and glossy)
 };
@@ -70,7 +82,6 @@ struct EnvironmentLight {
     const GlossyMap* glossy = nullptr;
 };
 
-// [doc:environment-shader]
 struct EnvironmentShader {
     normal_mapping::NormalMappedShader surface;  // lesson 07: positions and normals
     EnvironmentLight light;
@@ -81,6 +92,7 @@ struct EnvironmentShader {
         return surface.vertex(in);
     }
 
+    // [doc:environment-shader]
     rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
@@ -103,6 +115,7 @@ struct EnvironmentShader {
         }
         return {0, 0, 0};
     }
+    // [/doc:environment-shader]
 
     // Each pixel's Monte Carlo rays are its own (seeded by its place), so
     // the noise stays put when nothing moves.
@@ -111,6 +124,7 @@ struct EnvironmentShader {
                static_cast<std::uint32_t>(f.y) * 19349663u;
     }
 
+    // [doc:mirror-level]
     // The mip level a mirror reads: how far the reflected direction turns
     // from this pixel to the next (from the screen derivatives of the
     // position and the interpolated normal; the normal map's own bumps
@@ -130,7 +144,9 @@ struct EnvironmentShader {
         const float turn = std::max(rl::length(right - here), rl::length(up - here));
         return light.environment->level_for(turn);
     }
+    // [/doc:mirror-level]
 
+    // [doc:glass]
     // Glass: one interface, the front one (a rasterizer sees no back face
     // behind this pixel): what the refracted ray sees, and Fresnel's share
     // of the mirror image on top. Total internal reflection cannot happen
@@ -142,6 +158,7 @@ struct EnvironmentShader {
         const float share = schlick(rl::dot(n, to_eye), reflectance_at_normal(kGlassIor));
         return mirrored * share + light.environment->sample(*through) * (1 - share);
     }
+    // [/doc:glass]
 
     // [doc:glossy-shader]
     // Cook-Torrance's reflection of the environment, plus (for a plastic)
@@ -161,7 +178,11 @@ struct EnvironmentShader {
         return one_bounce + (shares.multiple + albedo * under) * mean_light;
     }
     // [/doc:glossy-shader]
+
+    rl::vec3 along(rl::vec3 n, rl::vec3 r) const {
+        return material.lookup == Lookup::dominant ? dominant_direction(n, r, material.roughness)
+                                                   : r;
+    }
 };
-// [/doc:environment-shader]
 
 }  // namespace environment

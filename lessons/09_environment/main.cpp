@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
         ->check(rl::finite_number(0, 1));
     rl::add_method_option(app, "--glossy", options.glossy, environment::kGlossies,
                           "How rough-metal and plastic gather the light they reflect");
+    rl::add_method_option(app, "--lookup", options.lookup, environment::kLookups,
+                          "Where the split sum reads its blurred maps: along the mirror direction, "
+                          "or leaning towards the normal as a rough lobe does");
     bool single_scatter = false;
     app.add_flag("--single-scatter", single_scatter,
                  "Leave out the light that bounces between a rough surface's facets (the "

@@ -74,6 +74,7 @@ SurfaceMaterial material_of(const RenderOptions& options, std::size_t index) {
             .roughness = options.roughness,
             .metal = options.metal,
             .glossy = options.glossy,
+            .lookup = options.lookup,
             .multiple_scattering = options.multiple_scattering,
             .samples = options.samples};
 }

@@ -37,6 +37,9 @@ struct RenderOptions {
     float roughness = 0.35f;   // rough metal and plastic
     rl::vec3 metal = kGoldF0;  // the rough metal's head-on reflectance
     Glossy glossy = Glossy::split_sum;
+    // Along the lobe's leaning direction: the lab's 09_glossy finds the
+    // split sum's error at 75 degrees from the normal 3 to 5 times smaller.
+    Lookup lookup = Lookup::dominant;
     bool multiple_scattering = true;
     GlossyOptions prefilter;  // the split sum's blurred maps
     // For diffuse light (and the light glossy surfaces bounce between

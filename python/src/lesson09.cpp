@@ -21,11 +21,12 @@ void bind_lesson09(py::module_ m) {
            Int<"height"> height, py::object source, const std::string& map,
            Int<"map_size"> map_size, const std::string& filter,
            const std::optional<std::string>& material, Real<"roughness"> roughness,
-           const Numbers<"metal">& metal, const std::string& glossy, bool multiple_scattering,
-           Int<"glossy_levels"> glossy_levels, Int<"glossy_size"> glossy_size,
-           Int<"glossy_samples"> glossy_samples, const std::string& irradiance,
-           Int<"samples"> samples, const std::string& tone_map, Real<"exposure"> exposure,
-           const std::string& normal_map, const std::string& tangents, bool skybox) {
+           const Numbers<"metal">& metal, const std::string& glossy, const std::string& lookup,
+           bool multiple_scattering, Int<"glossy_levels"> glossy_levels,
+           Int<"glossy_size"> glossy_size, Int<"glossy_samples"> glossy_samples,
+           const std::string& irradiance, Int<"samples"> samples, const std::string& tone_map,
+           Real<"exposure"> exposure, const std::string& normal_map, const std::string& tangents,
+           bool skybox) {
             check_size(width, height);
             environment::EnvironmentOptions env_options;
             env_options.source = model_path(source, "environment");
@@ -40,6 +41,7 @@ void bind_lesson09(py::module_ m) {
             for (float c : f0) finite("--metal", c, 0, 1);
             options.metal = {f0[0], f0[1], f0[2]};
             options.glossy = choice("--glossy", glossy, environment::kGlossies);
+            options.lookup = choice("--lookup", lookup, environment::kLookups);
             options.multiple_scattering = multiple_scattering;
             in_range("--glossy-levels", glossy_levels, 2, environment::kMaxGlossyLevels);
             in_range("--glossy-size", glossy_size, 8, environment::kMaxGlossySize);
@@ -79,6 +81,7 @@ void bind_lesson09(py::module_ m) {
         py::arg("metal") =
             std::vector<double>{rendering.metal.x, rendering.metal.y, rendering.metal.z},
         py::arg("glossy") = environment::name(rendering.glossy),
+        py::arg("lookup") = environment::name(rendering.lookup),
         py::arg("multiple_scattering") = true,
         py::arg("glossy_levels") = rendering.prefilter.levels,
         py::arg("glossy_size") = rendering.prefilter.size,
