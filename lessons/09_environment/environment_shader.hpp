@@ -171,7 +171,8 @@ struct EnvironmentShader {
         const rl::vec3 mean_light = light.diffuse->at(n, seed(f)) * (1 / std::numbers::pi_v<float>);
         const rl::vec3 one_bounce =
             material.glossy == Glossy::split_sum
-                ? shares.single * light.glossy->sample(r, material.roughness, mirror_level(f))
+                ? shares.single *
+                      light.glossy->sample(along(n, r), material.roughness, mirror_level(f))
                 : glossy_monte_carlo(*light.environment, n, to_eye, material.roughness, f0,
                                      material.samples, seed(f));
         const rl::vec3 under = rl::vec3{1, 1, 1} - shares.single - shares.multiple;
