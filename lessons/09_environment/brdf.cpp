@@ -49,7 +49,6 @@ rl::dvec3 cook_torrance(rl::dvec3 n, rl::dvec3 v, rl::dvec3 l, double alpha, rl:
     return schlick(rl::dot(v, h), f0) * (d * g / (4 * n_dot_l * n_dot_v));
 }
 
-// [doc:ggx-sample]
 rl::dvec3 ggx_half_vector(rl::dvec2 u, double alpha) {
     // Inverting the cumulative distribution of D(h) cos(theta_h) over the
     // hemisphere: cos^2(theta) = (1 - u) / (1 + (alpha^2 - 1) u); phi
@@ -62,7 +61,6 @@ rl::dvec3 ggx_half_vector(rl::dvec2 u, double alpha) {
     const double phi = 2 * kPi * u.y;
     return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
 }
-// [/doc:ggx-sample]
 
 double smith_masking_one(double n_dot_v, double alpha) {
     return n_dot_v <= 0 ? 0 : 1 / (1 + smith_lambda(n_dot_v, alpha));

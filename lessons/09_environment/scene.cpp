@@ -97,6 +97,7 @@ PreparedLight::PreparedLight(const Environment& environment, const RenderOptions
     if (needs_diffuse)
         diffuse_.emplace([env = &environment](rl::vec3 d) { return env->sample(d); },
                          options.irradiance, options.samples);
+    if (needs_glossy) split_sum_table();  // built here, not in the first pixel that asks
     if (needs_glossy && options.glossy == Glossy::split_sum)
         glossy_.emplace(environment, options.prefilter);
 }

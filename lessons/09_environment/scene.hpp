@@ -38,7 +38,7 @@ struct RenderOptions {
     rl::vec3 metal = kGoldF0;  // the rough metal's head-on reflectance
     Glossy glossy = Glossy::split_sum;
     // Along the lobe's leaning direction: the lab's 09_glossy finds the
-    // split sum's error at 75 degrees from the normal 3 to 5 times smaller.
+    // split sum's mean error 1.9 to 4.6 times smaller from roughness 0.5 to 1.
     Lookup lookup = Lookup::dominant;
     bool multiple_scattering = true;
     GlossyOptions prefilter;  // the split sum's blurred maps

@@ -312,3 +312,25 @@ TEST(GlossyShader, ReadingAlongTheLeanIsCloserToTheReference) {
 }
 
 }  // namespace
+
+namespace {
+
+// docs/09_environment.md's worked example: rough gold (roughness 1) seen
+// head-on. One bounce returns 1 - ln 2 of a white world; the red channel
+// (f0 = 1) gets the lost 0.693 back whole, 2.26 times its one bounce; the
+// blue one (f0 = 0.29, f_avg = 0.324) only 0.29 times its one bounce.
+TEST(Brdf, TheWorkedExample) {
+    using namespace environment;
+    const SplitSum one = split_sum(1.0, 1.0, 4096);
+    const double e = 1 - std::log(2.0);
+    EXPECT_NEAR(one.albedo(), e, 1e-3);
+    const SpecularShares gold = specular_shares(kGoldF0, one);
+    EXPECT_NEAR(gold.single.x + gold.multiple.x, 1.0, 1e-5);
+    EXPECT_NEAR(gold.multiple.x / gold.single.x, (1 - e) / e, 0.01);
+    const double f_avg = 0.29 + 0.71 / 21;
+    EXPECT_NEAR(f_avg, 0.324, 5e-4);
+    EXPECT_NEAR(gold.multiple.z / gold.single.z, f_avg * (1 - e) / (1 - (1 - e) * f_avg), 1e-3);
+    EXPECT_NEAR(gold.multiple.z / gold.single.z, 0.29, 0.005);
+}
+
+}  // namespace
