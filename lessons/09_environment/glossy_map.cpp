@@ -91,15 +91,31 @@ GlossyMap::GlossyMap(const Environment& environment, GlossyOptions options)
     check(options.size, 8, kMaxGlossySize, "--glossy-size");
     check(options.samples, 1, kMaxGlossySamples, "--glossy-samples");
     const int sharpest = glossy_face_size(1.0 / (options.levels - 1), options.size);
+    // A level with a quarter of the texels takes four times the samples:
+    // every level costs about the same, and the rough ones, which gather a
+    // bright sun from far off, are not left to a few lucky samples.
+    const auto samples_for = [&](int size) {
+        const long long scaled =
+            static_cast<long long>(options.samples) * (sharpest / size) * (sharpest / size);
+        return static_cast<int>(std::min<long long>(scaled, kMaxGlossySamples * 16LL));
+    };
+    long long work = 0;  // environment reads, all levels together
+    for (int k = 1; k < options.levels; ++k) {
+        const int size =
+            glossy_face_size(static_cast<double>(k) / (options.levels - 1), options.size);
+        work += 6LL * size * size * samples_for(size);
+    }
+    if (work > kMaxGlossyWork)
+        throw std::invalid_argument(
+            "--glossy-levels " + std::to_string(options.levels) + ", --glossy-size " +
+            std::to_string(options.size) + " and --glossy-samples " +
+            std::to_string(options.samples) + " ask for " + std::to_string(work) +
+            " reads of the environment, over the " + std::to_string(kMaxGlossyWork) +
+            " the blurred maps may take: lower one of them");
     for (int k = 1; k < options.levels; ++k) {
         const double roughness = static_cast<double>(k) / (options.levels - 1);
         const int size = glossy_face_size(roughness, options.size);
-        // A level with a quarter of the texels takes four times the samples:
-        // every level costs about the same, and the rough ones, which gather
-        // a bright sun from far off, are not left to a few lucky samples.
-        const long long scaled =
-            static_cast<long long>(options.samples) * (sharpest / size) * (sharpest / size);
-        const int samples = static_cast<int>(std::min<long long>(scaled, kMaxGlossySamples * 16LL));
+        const int samples = samples_for(size);
         const std::vector<LobeSample> lobe = ggx_lobe(environment, roughness, samples);
         blurred_.push_back(cube_map(
             [&](rl::dvec3 d) {

@@ -109,6 +109,21 @@ EnvironmentLight PreparedLight::light() const {
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
                                    const perspective::Camera& camera, const PreparedLight& light,
                                    const RenderOptions& options, LightTarget& frame) {
+    bool monte_carlo = false;
+    for (std::size_t i = 0; i < models.size(); ++i) {
+        const SurfaceMaterial m = material_of(options, i);
+        monte_carlo |= (is_glossy(m.material) && m.glossy == Glossy::monte_carlo) ||
+                       ((is_glossy(m.material) || m.material == Material::diffuse) &&
+                        options.irradiance == Irradiance::monte_carlo);
+    }
+    const long long rays = static_cast<long long>(frame.width()) * frame.height() * options.samples;
+    if (monte_carlo && rays > kMaxMonteCarloRays)
+        throw std::invalid_argument("--samples " + std::to_string(options.samples) + " at " +
+                                    std::to_string(frame.width()) + "x" +
+                                    std::to_string(frame.height()) + " asks for " +
+                                    std::to_string(rays) + " Monte Carlo rays, over the " +
+                                    std::to_string(kMaxMonteCarloRays) +
+                                    " a frame may take: fewer samples or a smaller image");
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     normal_mapping::RenderOptions surfaces;

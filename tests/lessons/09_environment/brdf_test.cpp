@@ -226,6 +226,12 @@ TEST(GlossyMap, OptionsOutsideTheirRangeAreRefused) {
     EXPECT_THROW(GlossyMap(grey, {.levels = kMaxGlossyLevels + 1}), std::invalid_argument);
     EXPECT_THROW(GlossyMap(grey, {.size = 4}), std::invalid_argument);
     EXPECT_THROW(GlossyMap(grey, {.samples = 0}), std::invalid_argument);
+    // Each option within its range, together far over the work cap: refused
+    // before any of it is built.
+    EXPECT_THROW(GlossyMap(grey, {.levels = kMaxGlossyLevels,
+                                  .size = kMaxGlossySize,
+                                  .samples = kMaxGlossySamples}),
+                 std::invalid_argument);
     RenderOptions options;
     options.roughness = std::nanf("");
     EXPECT_THROW(PreparedLight(grey, options, 2), std::invalid_argument);
