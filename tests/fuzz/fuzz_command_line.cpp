@@ -23,11 +23,14 @@ namespace {
 // Options that take a value the harness owns: sizes (a 16384 x 16384 image
 // is legal and slow) and output paths (the fuzzer must not write anywhere).
 // Lesson 09 (FUZZ_SMALL_MAP) also builds an environment map of --map-size
-// texels a side (up to 2048: seconds of work under the sanitizers).
-const std::set<std::string_view> kOwned = {"-o",        "--output", "--png",  "--depth-out",
-                                           "--width",   "--height", "--diff",
+// texels a side (up to 2048: seconds of work under the sanitizers), and
+// blurred maps of --glossy-size and --glossy-samples (up to 2^30 reads of
+// the map: minutes under the sanitizers).
+const std::set<std::string_view> kOwned = {
+    "-o",         "--output",      "--png",           "--depth-out",
+    "--width",    "--height",      "--diff",
 #ifdef FUZZ_SMALL_MAP
-                                           "--map-size"
+    "--map-size", "--glossy-size", "--glossy-samples"
 #endif
 };
 
@@ -69,7 +72,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const char* fixed : {"--width", "40", "--height", "32", "-o"})
         arguments.emplace_back(fixed);
 #ifdef FUZZ_SMALL_MAP
-    arguments.insert(arguments.end() - 1, {"--map-size", "8"});
+    arguments.insert(arguments.end() - 1,
+                     {"--map-size", "8", "--glossy-size", "8", "--glossy-samples", "4"});
 #endif
     arguments.push_back(output);
     std::vector<char*> argv;
