@@ -165,6 +165,8 @@ struct EnvironmentShader {
     // the albedo's diffuse light under it: what the specular layer lets through.
     rl::vec3 glossy(const perspective::Fragment<Varyings>& f, rl::vec3 n, rl::vec3 to_eye,
                     rl::vec3 r, rl::vec3 f0, rl::vec3 albedo) const {
+        // A broken model's zero or NaN normal: the surface faces the eye.
+        if (!(rl::dot(n, n) > 0.5f)) n = to_eye, r = to_eye;
         const float n_dot_v = std::max(rl::dot(n, to_eye), 1e-4f);
         const SpecularShares shares = specular_shares(
             f0, split_sum_table().at(n_dot_v, material.roughness), material.multiple_scattering);

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "brdf.hpp"
 #include "sphere_sampling.hpp"
@@ -63,7 +64,7 @@ rl::vec3 glossy_monte_carlo(const Environment& environment, rl::vec3 n, rl::vec3
         const double v_dot_h = rl::dot(to_eye, h);
         const rl::dvec3 l = h * (2 * v_dot_h) - to_eye;
         const double n_dot_l = rl::dot(frame.n, l);
-        if (n_dot_l <= 0 || v_dot_h <= 0) continue;
+        if (!(n_dot_l > 0 && v_dot_h > 0)) continue;  // below the surface (or not a number)
         const double weight =
             smith_masking(n_dot_v, n_dot_l, alpha) / smith_masking_one(n_dot_v, alpha);
         sum += schlick(v_dot_h, rl::cast<double>(f0)) * weight *
@@ -145,6 +146,38 @@ std::size_t GlossyMap::bytes() const {
         sum += 6 * static_cast<std::size_t>(c.size()) * static_cast<std::size_t>(c.size()) *
                sizeof(rl::vec4);
     return sum;
+}
+
+namespace {
+
+// "+x" -> "px", "-z" -> "nz": names a shell need not quote.
+std::string file_face(Face face) {
+    std::string text = name(face);
+    text[0] = text[0] == '+' ? 'p' : 'n';
+    return text;
+}
+
+}  // namespace
+
+std::vector<MapFile> map_files(const Environment& environment, const GlossyMap* glossy) {
+    std::vector<MapFile> files;
+    if (const CubeMap* cube = environment.cube()) {
+        for (int level = 0; level < cube->levels(); ++level)
+            for (Face face : kFaces)
+                files.push_back({"cube_" + file_face(face) + "_" + std::to_string(level) + ".hdr",
+                                 &cube->face(face).level(level)});
+    } else {
+        const LatLongMap& latlong = *environment.latlong();
+        for (int level = 0; level < latlong.map().levels(); ++level)
+            files.push_back(
+                {"latlong_" + std::to_string(level) + ".hdr", &latlong.map().level(level)});
+    }
+    if (glossy)
+        for (int k = 1; k < glossy->levels(); ++k)
+            for (Face face : kFaces)
+                files.push_back({"glossy_" + std::to_string(k) + "_" + file_face(face) + ".hdr",
+                                 &glossy->level(k).face(face).level(0)});
+    return files;
 }
 
 }  // namespace environment

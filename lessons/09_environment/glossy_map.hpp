@@ -85,4 +85,15 @@ class GlossyMap {
     std::vector<CubeMap> blurred_;  // levels 1 .. levels - 1
 };
 
+// One image of the maps a render reads, named for a folder of Radiance
+// .hdr files: the environment's cube faces (cube_<face>_<level>.hdr, faces
+// px nx py ny pz nz, each mip level) or its lat-long map (latlong_<level>.hdr),
+// and the split sum's blurred levels (glossy_<k>_<face>.hdr, roughness
+// k / (levels - 1)), if given.
+struct MapFile {
+    std::string name;
+    const rl::HdrImage* image;
+};
+std::vector<MapFile> map_files(const Environment& environment, const GlossyMap* glossy = nullptr);
+
 }  // namespace environment

@@ -5,6 +5,9 @@
 // docs/09_environment.md beside it.
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
 
 #include "05_perspective/view_cli.hpp"
 #include "rasterlab/image_io.hpp"
@@ -93,6 +96,10 @@ int main(int argc, char** argv) {
                           "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
                           "Tangent frames of the --model files (lesson 07)");
+    std::string maps_folder;
+    app.add_option("--write-maps", maps_folder,
+                   "Also write the maps the render read (the environment with its mip levels, "
+                   "the blurred maps) as Radiance .hdr files into this existing folder");
     bool no_skybox = false;
     app.add_flag("--no-skybox", no_skybox, "Leave the background black instead of the sky");
     CLI11_PARSE(app, argc, argv);
@@ -100,7 +107,8 @@ int main(int argc, char** argv) {
     const int width = image_options.width, height = image_options.height;
 
     return rl::guarded_main("09_environment", [&] {
-        rl::check_image_output(output);
+        rl::ImageOutputs outputs;
+        outputs.check(output);
         options.skybox = !no_skybox;
         options.multiple_scattering = !single_scatter;
         if (material_option->count() > 0) options.material = material;
@@ -113,6 +121,14 @@ int main(int argc, char** argv) {
         const environment::Environment env = environment::make_environment(env_options, warnings);
         const environment::PreparedLight light(env, options, models.size());
         const auto built = std::chrono::steady_clock::now();
+        // The maps' files are checked before the frame is drawn: a bad
+        // folder, or a name that is the input's or the image's, costs no frame.
+        std::vector<environment::MapFile> map_files;
+        if (!maps_folder.empty()) {
+            map_files = environment::map_files(env, light.glossy());
+            for (const environment::MapFile& f : map_files)
+                outputs.check_file(std::filesystem::path(maps_folder) / f.name);
+        }
         rl::print_warnings("09_environment", warnings);
         if (options.map_filter == textures::Filter::trilinear)
             normal_mapping::build_mip_levels(models);
@@ -122,20 +138,29 @@ int main(int argc, char** argv) {
             environment::render(models, camera, light, options, frame);
         const rl::Image picture = environment::tone_mapped(frame.colour(), exposure);
         const auto done = std::chrono::steady_clock::now();
-        rl::save_image(output, picture);
+        outputs.stage(output, picture);
+        for (const environment::MapFile& f : map_files) {
+            const std::filesystem::path path = std::filesystem::path(maps_folder) / f.name;
+            outputs.stage_bytes(path, rl::encode_hdr(path, *f.image));
+        }
+        outputs.commit();
         const std::chrono::duration<double, std::milli> map_ms = built - start,
                                                         frame_ms = done - drawing;
         std::printf(
             "%zu models: %zu faces, %zu fragments shaded, %s; %s environment as a %s map (%d, %s "
             "filter) and its light built in %.1f ms; frame (with the sky and the %s tone map) in "
             "%.1f ms; into "
-            "%s\n",
+            "%s%s\n",
             models.size(), counts.faces, counts.fragments,
             options.material ? environment::name(*options.material) : "mirror and rough-metal",
             env_options.source.c_str(), environment::name(env.layout()),
             env.cube() ? env.cube()->size() : env.latlong()->height(),
             environment::name(env.filter()), map_ms.count(), environment::name(exposure.curve),
-            frame_ms.count(), output.c_str());
+            frame_ms.count(), output.c_str(),
+            map_files.empty()
+                ? ""
+                : (", and " + std::to_string(map_files.size()) + " maps into " + maps_folder)
+                      .c_str());
         return 0;
     });
 }

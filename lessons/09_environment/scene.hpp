@@ -94,6 +94,7 @@ class PreparedLight {
                   std::size_t model_count);
     const Environment& environment() const { return *environment_; }
     EnvironmentLight light() const;
+    const GlossyMap* glossy() const { return glossy_ ? &*glossy_ : nullptr; }
 
   private:
     const Environment* environment_;

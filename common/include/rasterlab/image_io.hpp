@@ -55,6 +55,9 @@ class ImageOutputs {
         check_image_output(path);
         files_.check(path);  // and not the same file as another output
     }
+    // An output of another kind (staged with stage_bytes): only the file
+    // rules, whatever its extension.
+    void check_file(const std::filesystem::path& path) { files_.check(path); }
     void stage(const std::filesystem::path& path, const Image& image, bool keep_alpha = false) {
         files_.stage(path, encode_image(path, image, keep_alpha));
     }

@@ -220,6 +220,23 @@ TEST(GlossyMap, FewBlurredSamplesMatchManySharpOnes) {
         }
 }
 
+// Broken directions and roughnesses read something finite: a NaN or zero
+// direction, a NaN roughness, a NaN normal for Monte Carlo.
+TEST(GlossyMap, BrokenDirectionsReadSomethingFinite) {
+    const Environment sky(cube_map(Analytic::sky, 16, 1), MapFilter::seamless);
+    const GlossyMap glossy(sky, {.levels = 3, .size = 8, .samples = 4});
+    const float nan = std::nanf("");
+    for (rl::vec3 d : {rl::vec3{nan, 0, 1}, rl::vec3{0, 0, 0}, rl::vec3{1, 0, 0}})
+        for (float roughness : {nan, -1.0f, 0.0f, 0.5f, 1.0f, 2.0f}) {
+            const rl::vec3 c = glossy.sample(d, roughness);
+            EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+        }
+    for (rl::vec3 n : {rl::vec3{nan, nan, nan}, rl::vec3{0, 1, 0}}) {
+        const rl::vec3 c = glossy_monte_carlo(sky, n, {0, 0, 1}, 0.5f, kGoldF0, 16, 3);
+        EXPECT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+    }
+}
+
 TEST(GlossyMap, OptionsOutsideTheirRangeAreRefused) {
     const Environment grey = constant({0.5, 0.5, 0.5});
     EXPECT_THROW(GlossyMap(grey, {.levels = 1}), std::invalid_argument);

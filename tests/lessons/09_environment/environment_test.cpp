@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "../../unit/temp_dir.hpp"
+#include "09_environment/glossy_map.hpp"
 #include "09_environment/optics.hpp"
 #include "09_environment/scene.hpp"
 #include "09_environment/tone_map.hpp"
@@ -188,6 +189,37 @@ TEST(Environments, AnHdrWithAbsurdTexelsIsCleanedWithAWarning) {
     const rl::HdrImage& stored = env.latlong()->map().level(0);
     EXPECT_EQ(stored.get(2, 1).x, 0.0f);
     EXPECT_NEAR(stored.get(0, 0).x, 0.5f, 0.01f);
+}
+
+// The maps a render reads, written as .hdr files: every cube face of every
+// mip level and every blurred level, or the lat-long map's levels; a
+// written lat-long map read back (--environment) is the map it was, to
+// RGBE's 8 bits of mantissa.
+TEST(Environments, WrittenMapsReadBackAsTheyWere) {
+    std::vector<std::string> warnings;
+    const Environment cube = make_environment({.size = 16}, warnings);
+    const GlossyMap glossy(cube, {.levels = 3, .size = 8, .samples = 4});
+    const std::vector<MapFile> files = map_files(cube, &glossy);
+    ASSERT_EQ(files.size(), 6u * 5 + 6u * 2);  // levels 16, 8, 4, 2, 1; two blurred levels
+    EXPECT_EQ(files.front().name, "cube_px_0.hdr");
+    EXPECT_EQ(files[5].name, "cube_nz_0.hdr");
+    EXPECT_EQ(files.back().name, "glossy_2_nz.hdr");
+
+    const Environment latlong = make_environment({.layout = Layout::latlong, .size = 16}, warnings);
+    const std::vector<MapFile> rows = map_files(latlong);
+    ASSERT_EQ(rows.size(), 6u);  // 32x16 down to 1x1
+    EXPECT_EQ(rows[0].name, "latlong_0.hdr");
+    const rl_test::TempDir dir;
+    const std::filesystem::path path = dir.path() / rows[0].name;
+    rl_test::write_bytes(path, rl::encode_hdr(path, *rows[0].image));
+    const Environment back = make_environment(
+        {.source = path.string(), .layout = Layout::latlong, .size = 16}, warnings);
+    EXPECT_TRUE(warnings.empty());
+    for (rl::vec3 d : {rl::vec3{0, 1, 0}, rl::vec3{0.3f, -0.4f, 0.8f}, rl::vec3{-1, 0.1f, 0}}) {
+        const rl::vec3 a = latlong.sample(d), b = back.sample(d);
+        EXPECT_NEAR(b.x / a.x, 1.0, 0.01);
+        EXPECT_NEAR(b.z / a.z, 1.0, 0.01);
+    }
 }
 
 TEST(Environments, AMissingHdrIsAFileErrorNamingIt) {
