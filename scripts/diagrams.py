@@ -28,6 +28,7 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   09_reflect_refract.svg     reflection and refraction at glass, with Snell's angles and Fresnel's share
   09_microfacets.svg         a rough surface as tiny mirrors: the facets facing h, one shadowed, one masked
   09_lobe_lean.svg           GGX's one-bounce lobe seen head-on and at 75 degrees, against the mirror direction
+  09_split_sum.svg           the split sum's two halves: the BRDF's albedo over n.v and roughness, the lobes that blur the light
   12_tiles_and_bins.svg      a frame cut into tiles, each tile's bin of triangles, the owning thread
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
@@ -1223,6 +1224,69 @@ def lobe_lean(out):
     save(figure, out, "09_lobe_lean.svg")
 
 
+def one_bounce_albedo(n_dot_v, roughness, count=512):
+    """The BRDF's half of the split sum for F = 1, by importance sampling GGX's
+    facet normals (angles from the normal stratified, turns by the golden
+    ratio): each ray weighs G (v.h) / ((n.h)(n.v)), as in the program's table."""
+    alpha = roughness * roughness
+    a2 = alpha * alpha
+    v = (math.sqrt(1 - n_dot_v * n_dot_v), 0.0, n_dot_v)
+
+    def lam(c):
+        return 0.5 * (math.sqrt(1 + a2 * (1 - c * c) / (c * c)) - 1)
+
+    total = 0.0
+    for k in range(count):
+        u = (k + 0.5) / count
+        cos_t = math.sqrt((1 - u) / (1 + (a2 - 1) * u))
+        sin_t = math.sqrt(max(0.0, 1 - cos_t * cos_t))
+        phi = 2 * math.pi * ((k * 0.6180339887) % 1.0)
+        h = (sin_t * math.cos(phi), sin_t * math.sin(phi), cos_t)
+        v_dot_h = v[0] * h[0] + v[1] * h[1] + v[2] * h[2]
+        l_z = 2 * v_dot_h * h[2] - v[2]
+        if l_z <= 0 or v_dot_h <= 0:
+            continue
+        g = 1 / (1 + lam(n_dot_v) + lam(l_z))
+        total += g * v_dot_h / (h[2] * n_dot_v)
+    return total / count
+
+
+def split_sum(out):
+    figure, (left, right) = plt.subplots(1, 2, figsize=(6.5, 3.2), gridspec_kw={"width_ratios": [1, 1.15]})
+    steps = 16
+    grid = [[one_bounce_albedo((i + 0.5) / steps, (j + 0.5) / steps) for i in range(steps)]
+            for j in range(steps)]
+    image = left.imshow(grid, origin="lower", extent=(0, 1, 0, 1), cmap="viridis", vmin=0, vmax=1)
+    left.set_xlabel("n.v", fontsize=8)
+    left.set_ylabel("roughness", fontsize=8)
+    left.tick_params(labelsize=7)
+    left.set_title("the BRDF's half: one bounce's albedo\n(A + B; F0 A + B for a metal), a table", fontsize=8)
+    figure.colorbar(image, ax=left, fraction=0.046, pad=0.04).ax.tick_params(labelsize=7)
+    # The light's half: the prefilter's kernel around r (n = v = r), D(h) n.l
+    # in the plane, for each blurred level's roughness.
+    for roughness, colour in ((0.2, "#1b9e77"), (0.4, "#d95f02"), (0.6, "#7570b3"), (0.8, "#e7298a"),
+                              (1.0, "#66a61e")):
+        alpha = roughness * roughness
+        a2 = alpha * alpha
+        angles = [math.radians(-89.5 + 0.5 * k) for k in range(359)]
+        values = []
+        for a in angles:
+            n_dot_h = math.cos(a / 2)
+            values.append(a2 / (math.pi * (n_dot_h * n_dot_h * (a2 - 1) + 1) ** 2) * math.cos(a))
+        peak = max(values)
+        xs = [math.sin(a) * f / peak for a, f in zip(angles, values)]
+        ys = [math.cos(a) * f / peak for a, f in zip(angles, values)]
+        right.plot(xs, ys, color=colour, lw=1.3, label=f"roughness {roughness:g}")
+    right.annotate("", (0, 1.08), (0, 0), arrowprops=dict(arrowstyle="->", color=INK, lw=1))
+    right.text(0.03, 1.05, "r (= n = v)", fontsize=7.5)
+    right.plot([-1.1, 1.1], [0, 0], color=INK, lw=0.8)
+    right.legend(fontsize=6.5, loc="upper right", frameon=False, bbox_to_anchor=(1.12, 1.0))
+    right.set_title("the light's half: the environment blurred by\neach level's lobe around r (peaks scaled to 1)",
+                    fontsize=8)
+    bare(right, (-1.15, 1.15), (-0.05, 1.15))
+    save(figure, out, "09_split_sum.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
@@ -1230,7 +1294,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean):
+                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum):
         draw(out)
 
 
