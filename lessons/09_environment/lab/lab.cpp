@@ -158,7 +158,7 @@ struct GlossyCase {
     std::string name;
     int levels = 0, size = 0, samples = 0;  // blurred maps (0: Monte Carlo)
     int rays = 0;                           // Monte Carlo
-    bool by_roughness = true;               // in 09_glossy.csv (every setting is in 09_prefilter.csv)
+    bool by_roughness = true;  // in 09_glossy.csv (every setting is in 09_prefilter.csv)
     Lookup lookup = Lookup::dominant;
     std::shared_ptr<GlossyMap> map;
     double build_ms = 0;
@@ -310,11 +310,12 @@ int main(int argc, char** argv) {
                              " samples";
                     c.levels = levels, c.size = size, c.samples = samples;
                     const GlossyOptions defaults;
-                    c.by_roughness = options.quick ||
-                                     (levels == defaults.levels && size == defaults.size &&
-                                      samples == defaults.samples) ||
-                                     (levels == level_counts.back() && size == glossy_sizes.back() &&
-                                      samples == glossy_samples.back());
+                    c.by_roughness =
+                        options.quick ||
+                        (levels == defaults.levels && size == defaults.size &&
+                         samples == defaults.samples) ||
+                        (levels == level_counts.back() && size == glossy_sizes.back() &&
+                         samples == glossy_samples.back());
                     const auto start = std::chrono::steady_clock::now();
                     c.map = std::make_shared<GlossyMap>(
                         glossy_sky,
@@ -349,8 +350,8 @@ int main(int argc, char** argv) {
         for (const GlossyCase& c : glossy_cases)
             if (c.by_roughness)
                 benchmark::RegisterBenchmark(("glossy/" + c.name).c_str(), evaluate_glossy, &c,
-                                         &glossy_sky, &points, 0.5f)
-                ->Unit(benchmark::kMicrosecond);
+                                             &glossy_sky, &points, 0.5f)
+                    ->Unit(benchmark::kMicrosecond);
 
         const std::map<std::string, rl::lab::Timing> timings = rl::lab::run_benchmarks();
 
@@ -402,8 +403,7 @@ int main(int argc, char** argv) {
         const double count = static_cast<double>(points.size());
         for (const GlossyCase& c : glossy_cases) {
             const rl::lab::Timing no_timing;
-            const rl::lab::Timing& t =
-                c.by_roughness ? timings.at("glossy/" + c.name) : no_timing;
+            const rl::lab::Timing& t = c.by_roughness ? timings.at("glossy/" + c.name) : no_timing;
             const double mib = c.map ? static_cast<double>(c.map->bytes()) / (1 << 20) : 0.0;
             double all = 0, worst = 0;
             for (std::size_t r = 0; r < roughnesses.size(); ++r) {
@@ -426,11 +426,11 @@ int main(int argc, char** argv) {
                 worst = std::max(worst, sum / count);
             }
             if (c.map && c.lookup == Lookup::dominant)
-                prefilter.add_row(
-                    {static_cast<long long>(c.levels), static_cast<long long>(c.size),
-                     static_cast<long long>(c.samples),
-                     std::to_string(c.size) + "/" + std::to_string(c.samples),
-                     c.build_ms, mib, all / static_cast<double>(roughnesses.size()), worst});
+                prefilter.add_row({static_cast<long long>(c.levels), static_cast<long long>(c.size),
+                                   static_cast<long long>(c.samples),
+                                   std::to_string(c.size) + "/" + std::to_string(c.samples),
+                                   c.build_ms, mib, all / static_cast<double>(roughnesses.size()),
+                                   worst});
         }
         glossy.write_csv(options.out_dir / "09_glossy.csv");
         std::printf("wrote %s\n", (options.out_dir / "09_glossy.csv").c_str());
