@@ -92,6 +92,9 @@ int main(int argc, char** argv) {
     app.add_option("--exposure", exposure.stops, "Exposure in stops: the light times 2^stops")
         ->capture_default_str()
         ->check(rl::finite_number(-20, 20));
+    rl::add_method_option(app, "--frame-store", exposure.store, environment::kFrameStores,
+                          "What the frame keeps before the tone map: float light, or (no HDR) "
+                          "the exposed light as linear bytes, 0 to 1 in 256 steps");
     rl::add_method_option(app, "--normal-map", options.normal_map, normal_mapping::kNormalMaps,
                           "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,

@@ -7,8 +7,9 @@ namespace environment {
 
 // [doc:tone-map]
 float tone_map(float light, const Exposure& exposure) {
-    const float c = light * std::exp2(exposure.stops);
+    float c = light * std::exp2(exposure.stops);
     if (!(c > 0) || !std::isfinite(c)) return 0;
+    if (exposure.store == FrameStore::bytes) c = std::round(std::min(c, 1.0f) * 255) / 255;
     switch (exposure.curve) {
         case ToneMap::clamp:
             return std::min(c, 1.0f);

@@ -27,9 +27,23 @@ inline const char* name(ToneMap value) {
     return rl::name_in(kToneMapNames, value);
 }
 
+// What the frame keeps between drawing and the tone map: float light (HDR,
+// no upper limit), or what a render target of bytes would keep (no HDR):
+// the exposed light in 256 even steps from 0 to 1, everything brighter cut
+// to 1. Linear bytes are coarse in the dark: their first step above black
+// is already 13 of 255 once encoded to sRGB, so dark gradients band.
+enum class FrameStore { float_light, bytes };
+inline constexpr std::array<rl::Named<FrameStore>, 2> kFrameStoreNames = {
+    {{FrameStore::float_light, "float"}, {FrameStore::bytes, "bytes"}}};
+inline constexpr std::array<FrameStore, 2> kFrameStores = rl::values_of(kFrameStoreNames);
+inline const char* name(FrameStore value) {
+    return rl::name_in(kFrameStoreNames, value);
+}
+
 struct Exposure {
     ToneMap curve = ToneMap::aces;
     float stops = 0;  // the light is scaled by 2^stops first
+    FrameStore store = FrameStore::float_light;
 };
 
 // One value through the exposure and the curve: 0..1. NaN, negative or

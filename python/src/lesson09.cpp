@@ -25,8 +25,8 @@ void bind_lesson09(py::module_ m) {
            bool multiple_scattering, Int<"glossy_levels"> glossy_levels,
            Int<"glossy_size"> glossy_size, Int<"glossy_samples"> glossy_samples,
            const std::string& irradiance, Int<"samples"> samples, const std::string& tone_map,
-           Real<"exposure"> exposure, const std::string& normal_map, const std::string& tangents,
-           bool skybox) {
+           Real<"exposure"> exposure, const std::string& frame_store, const std::string& normal_map,
+           const std::string& tangents, bool skybox) {
             check_size(width, height);
             environment::EnvironmentOptions env_options;
             env_options.source = model_path(source, "environment");
@@ -54,6 +54,8 @@ void bind_lesson09(py::module_ m) {
             environment::Exposure exposure_options;
             exposure_options.curve = choice("--tone-map", tone_map, environment::kToneMaps);
             exposure_options.stops = finite("--exposure", exposure, -20, 20);
+            exposure_options.store =
+                choice("--frame-store", frame_store, environment::kFrameStores);
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);
             const perspective::ViewOptions view = view_options(models, camera, default_light());
             Result r;
@@ -89,8 +91,9 @@ void bind_lesson09(py::module_ m) {
         py::arg("irradiance") = environment::name(environment::RenderOptions{}.irradiance),
         py::arg("samples") = environment::RenderOptions{}.samples,
         py::arg("tone_map") = environment::name(environment::Exposure{}.curve),
-        py::arg("exposure") = 0.0, py::arg("normal_map") = "tangent", py::arg("tangents") = "split",
-        py::arg("skybox") = true,
+        py::arg("exposure") = 0.0,
+        py::arg("frame_store") = environment::name(environment::Exposure{}.store),
+        py::arg("normal_map") = "tangent", py::arg("tangents") = "split", py::arg("skybox") = true,
         "09_environment: the globe and the torus (or the models given, as stored) as mirrors, "
         "glass, diffuse surfaces, rough metal or plastic (material=None: a mirror globe and a "
         "rough-metal torus) lit by the environment (sky, studio, white or the path of a lat-long "

@@ -168,13 +168,15 @@ def test_lesson09_default(programs):
          programs.image("09", "--map-size", 64, *SIZE))
 
 
-def test_lesson09_glass_latlong_studio(programs):
+def test_lesson09_glass_latlong_studio_bytes(programs):
     same(rasterlab.lesson09.render(environment="studio", map="latlong", map_size=32,
                                    filter="trilinear", material="glass", tone_map="reinhard",
-                                   exposure=1.5, normal_map="none", skybox=False, **SMALL),
+                                   exposure=1.5, frame_store="bytes", normal_map="none",
+                                   skybox=False, **SMALL),
          programs.image("09", "--environment", "studio", "--map", "latlong", "--map-size", 32,
                         "--filter", "trilinear", "--material", "glass", "--tone-map",
-                        "reinhard", "--exposure", 1.5, "--normal-map", "none", "--no-skybox",
+                        "reinhard", "--exposure", 1.5, "--frame-store", "bytes", "--normal-map",
+                        "none", "--no-skybox",
                         *SIZE))
 
 

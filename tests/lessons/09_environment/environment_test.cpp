@@ -74,6 +74,25 @@ TEST(ToneMap, ShapesExposureAndBrokenLight) {
         for (ToneMap curve : kToneMaps) EXPECT_EQ(tone_map(bad, {curve, 0}), 0.0f);
 }
 
+// Without HDR the frame keeps the exposed light as linear bytes: dark
+// light falls onto 1/255 steps (the first of them already 13 of 255 once
+// encoded to sRGB), and all light above 1 is the same white, whatever the
+// tone map would have made of it.
+TEST(ToneMap, ABytesFrameBandsTheDarkAndCutsAtOne) {
+    const Exposure bytes{ToneMap::clamp, 0, FrameStore::bytes};
+    EXPECT_EQ(tone_map(0.0015f, bytes), 0.0f);  // under half a step: black
+    EXPECT_EQ(tone_map(0.0025f, bytes), 1.0f / 255);
+    EXPECT_EQ(tone_map(0.0045f, bytes), 1.0f / 255);  // one step holds both
+    EXPECT_EQ(
+        shading::encode(rl::vec3{1, 1, 1} * tone_map(0.0025f, bytes), shading::Output::srgb).r, 13);
+    EXPECT_NE(tone_map(0.0025f, {ToneMap::clamp, 0}), tone_map(0.0045f, {ToneMap::clamp, 0}));
+    // The exposure comes first: four stops down, a light of 0.1 is 0.00625.
+    EXPECT_EQ(tone_map(0.1f, {ToneMap::clamp, -4, FrameStore::bytes}), 2.0f / 255);
+    // Above 1: a Reinhard curve sees the cut value.
+    EXPECT_NEAR(tone_map(5.0f, {ToneMap::reinhard, 0, FrameStore::bytes}), 0.5f, 1e-7f);
+    EXPECT_NEAR(tone_map(5.0f, {ToneMap::reinhard, 0}), 5.0f / 6, 1e-6f);
+}
+
 // The ray through a pixel goes where the camera's projection sends it: a
 // point along it projects back onto that pixel's centre.
 TEST(Skybox, ThePixelRayIsTheProjectionsInverse) {
