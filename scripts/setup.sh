@@ -17,6 +17,7 @@ packages=(
   libhwy-dev                                # lesson 12's SIMD (Google Highway)
   libtbb-dev                                # lesson 12's threads (oneTBB)
   libosmesa6-dev                            # lesson 12's peer: Mesa's llvmpipe, off screen
+  libembree-dev                             # lesson 10's ray-traced truth (Embree)
   libsdl2-dev xvfb                          # lesson 13's viewer, and its window tests
   python3-dev pybind11-dev                  # the Python module (python/)
   python3-numpy python3-pytest              # its arrays and its tests

@@ -1,0 +1,85 @@
+// Screen-space ambient occlusion: from the G-buffer alone, how much of the
+// hemisphere above each visible point is open within a radius, weighted by
+// the cosine to the normal (1: open, 0: closed). Three methods, each with
+// a fixed-seed kernel and a rotation that differs from pixel to pixel
+// (a 4x4 tile of noise), then a blur that keeps to one surface.
+// Derivations and pictures: docs/10_ambient_occlusion.md.
+//
+//   const occlusion::AoOptions options{.method = occlusion::AoMethod::horizon, .samples = 16};
+//   const rl::FloatImage ao = occlusion::ambient_occlusion(g, screen, options);
+#pragma once
+
+#include <array>
+
+#include "gbuffer.hpp"
+#include "rasterlab/image.hpp"
+#include "rasterlab/named_enum.hpp"
+
+namespace occlusion {
+
+// none: every point open. crytek: points in a ball around the point, no
+// normal (Crysis, 2007): a flat floor comes out half closed. hemisphere:
+// points in the half ball above the normal, with a range check.
+// horizon: per slice of directions through the eye, the highest horizon on
+// each side, integrated in closed form against the cosine (ground-truth
+// AO, Jimenez et al. 2016).
+enum class AoMethod { none, crytek, hemisphere, horizon };
+inline constexpr std::array<rl::Named<AoMethod>, 4> kAoMethodNames = {
+    {{AoMethod::none, "none"},
+     {AoMethod::crytek, "crytek"},
+     {AoMethod::hemisphere, "hemisphere"},
+     {AoMethod::horizon, "horizon"}}};
+inline constexpr std::array<AoMethod, 4> kAoMethods = rl::values_of(kAoMethodNames);
+inline const char* name(AoMethod value) {
+    return rl::name_in(kAoMethodNames, value);
+}
+
+inline constexpr int kMaxAoSamples = 1024;
+inline constexpr int kMaxBlurRadius = 8;
+
+struct AoOptions {
+    AoMethod method = AoMethod::horizon;
+    // Depth-buffer reads a pixel: ball or half-ball points for crytek and
+    // hemisphere; slices x 2 sides x 4 steps for horizon (at least one slice).
+    int samples = 16;
+    float radius = 0.5f;  // world units: what lies farther does not occlude
+    int blur = 2;        // the blur's half width in pixels (0: none); 2 covers the noise's 4x4 tile
+    bool rotate = true;  // false: the same kernel at every pixel (bands)
+};
+
+// Throws std::invalid_argument naming the option outside its range.
+void check(const AoOptions& options);
+
+// Per pixel, 0 (closed) to 1 (open); 1 where no model is.
+rl::FloatImage ambient_occlusion(const GBuffer& g, const Screen& screen, const AoOptions& options);
+
+// What every method reads, found once per frame from the depth buffer:
+// each pixel's view depth and world point (NaN where no model is).
+struct Surfaces {
+    const GBuffer& g;
+    const Screen& screen;
+    rl::FloatImage depth;
+    rl::Grid<rl::vec3> position;
+    Surfaces(const GBuffer& g, const Screen& screen);
+    bool inside(float x, float y) const {
+        return x >= 0 && y >= 0 && x < static_cast<float>(g.width()) &&
+               y < static_cast<float>(g.height());
+    }
+};
+
+// The unblurred methods, and the blur: a pixel averages its neighbours
+// within `radius` pixels that lie on its own surface (within a tenth of the
+// AO radius of its tangent plane, their normals within 25 degrees of its own).
+rl::FloatImage raw_occlusion(const Surfaces& surfaces, const AoOptions& options);
+rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, int radius,
+                            float ao_radius);
+
+// The fixed kernels, in the frame of +z (the normal; crytek's fills the
+// whole ball): point i of n, nearer the centre for small i.
+rl::vec3 ball_point(int i, int n);
+rl::vec3 hemisphere_point(int i, int n);
+// The 4x4 tile's rotation at pixel (x, y), a turn in [0, 1): each of 16
+// values once per tile.
+float rotation_at(int x, int y);
+
+}  // namespace occlusion

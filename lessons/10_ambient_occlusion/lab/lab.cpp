@@ -1,0 +1,138 @@
+// Lesson 10's lab: screen-space ambient occlusion against ray-traced
+// occlusion. On lesson 08's scene at the program's default view, the
+// G-buffer is drawn once; each method, sample count, radius and blur then
+// computes the occlusion from it, timed (the AO pass alone: the depth
+// buffer's points, the method, the blur) and scored at every pixel against
+// ao_truth.hpp's rays: the mean and 95th percentile of the error away from
+// depth edges, and the mean near them (halos). Sweeps:
+//   1. every method at 4 to 128 samples, with the default blur and without;
+//   2. the radius, for the default method and samples (each radius its own truth);
+//   3. the same kernel at every pixel (no rotation).
+// Writes 10_methods.csv and 10_radius.csv.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "05_perspective/view_options.hpp"
+#include "ao_truth.hpp"
+#include "rasterlab/lab.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "rasterlab/results_table.hpp"
+
+namespace {
+
+using namespace occlusion;
+
+struct Setup {
+    const GBuffer* g = nullptr;
+    const Screen* screen = nullptr;
+};
+
+struct Case {
+    std::string group;
+    AoOptions ao;
+};
+
+std::string label(const AoOptions& o) {
+    return std::string(name(o.method)) + ", " + std::to_string(o.samples) + " samples" +
+           (o.blur > 0 ? ", blur " + std::to_string(o.blur) : ", no blur") +
+           (o.rotate ? "" : ", no rotation");
+}
+
+void time_ao(benchmark::State& state, const Setup* s, const Case* c) {
+    for (auto _ : state) {
+        const rl::FloatImage ao = ambient_occlusion(*s->g, *s->screen, c->ao);
+        benchmark::DoNotOptimize(ao.get(0, 0));
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const rl::lab::Options options = rl::lab::init(
+        argc, argv, "Lesson 10 lab: screen-space ambient occlusion against ray-traced occlusion.");
+    return rl::guarded_main("10_ambient_occlusion_lab", [&] {
+        std::vector<std::string> warnings;
+        std::vector<normal_mapping::MappedModel> models = shadows::default_scene(warnings);
+        normal_mapping::build_mip_levels(models);
+        const int size = options.quick ? 96 : 800;
+        const int truth_rays = options.quick ? 64 : 1024;
+        const perspective::ViewOptions view;  // the program's default view, framed
+        const perspective::Camera camera =
+            perspective::resolve_camera(view, shadows::scene_box(models), 1);
+        SceneOptions scene;
+        shadows::set_lights(scene.shadow, view, false);
+        const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, 1, scene.shadow);
+        const GBuffer g = render_gbuffer(models, camera, scene.shadow, map, size, size);
+        const Screen screen(camera, size, size);
+        const Setup setup{&g, &screen};
+
+        std::vector<Case> cases;
+        const AoOptions base;
+        const std::vector<int> counts =
+            options.quick ? std::vector<int>{8, 16} : std::vector<int>{4, 8, 16, 32, 64, 128};
+        for (AoMethod m : {AoMethod::crytek, AoMethod::hemisphere, AoMethod::horizon})
+            for (int n : counts)
+                for (int blur : {0, base.blur}) {
+                    AoOptions o = base;
+                    o.method = m, o.samples = n, o.blur = blur;
+                    cases.push_back({"methods", o});
+                }
+        const std::size_t method_cases = cases.size();
+        for (float r : {0.125f, 0.25f, 0.5f, 1.0f, 2.0f}) {
+            AoOptions o = base;
+            o.radius = r;
+            cases.push_back({"radius", o});
+        }
+        {
+            AoOptions o = base;
+            o.rotate = false;
+            cases.push_back({"methods", o});
+        }
+        const auto bench_name = [](const Case& c) {
+            return "ao/" + c.group + "/" + label(c.ao) + "/r" + std::to_string(c.ao.radius);
+        };
+        for (const Case& c : cases)
+            benchmark::RegisterBenchmark(bench_name(c).c_str(), time_ao, &setup, &c)
+                ->Unit(benchmark::kMillisecond);
+        const auto timings = rl::lab::run_benchmarks();
+
+        const RayTracedAo rays(models);
+        std::map<float, TruthFrame> truths;  // by radius
+        const auto truth_for = [&](float radius) -> const TruthFrame& {
+            if (!truths.count(radius)) {
+                const auto start = std::chrono::steady_clock::now();
+                truths.emplace(radius, rays.frame(camera, size, size, radius, truth_rays));
+                const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+                std::printf("truth at radius %g: %d rays a pixel in %.1f s\n",
+                            static_cast<double>(radius), truth_rays, took.count());
+            }
+            return truths.at(radius);
+        };
+        const std::vector<std::string> columns = {
+            "method", "samples",    "blur",      "rotate",     "radius", "ms_per_frame", "ms_min",
+            "ms_max", "mean_error", "p95_error", "edge_error", "pixels", "edge_pixels"};
+        rl::ResultsTable methods(columns), radius(columns);
+        for (std::size_t i = 0; i < cases.size(); ++i) {
+            const Case& c = cases[i];
+            const rl::FloatImage ao = ambient_occlusion(g, screen, c.ao);
+            const AoError e = compare(truth_for(c.ao.radius), ao, g, screen, c.ao.radius);
+            const rl::lab::Timing& t = timings.at(bench_name(c));
+            (i < method_cases || c.group == "methods" ? methods : radius)
+                .add_row({std::string(name(c.ao.method)), static_cast<long long>(c.ao.samples),
+                          static_cast<long long>(c.ao.blur),
+                          std::string(c.ao.rotate ? "yes" : "no"), static_cast<double>(c.ao.radius),
+                          t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6, e.mean, e.p95,
+                          e.edge_mean, static_cast<long long>(e.pixels),
+                          static_cast<long long>(e.edge_pixels)});
+        }
+        methods.write_csv(options.out_dir / "10_methods.csv");
+        radius.write_csv(options.out_dir / "10_radius.csv");
+        std::printf("wrote 10_methods.csv and 10_radius.csv to %s\n",
+                    options.out_dir.string().c_str());
+        return 0;
+    });
+}

@@ -1,0 +1,79 @@
+// Lesson 10: ambient occlusion. Lesson 08's scene drawn once into a
+// G-buffer (direct light, albedo, normal, depth), then a screen-space pass
+// that finds how open each visible point's hemisphere is, which darkens the
+// ambient light only. Read docs/10_ambient_occlusion.md beside this.
+#include <chrono>
+#include <cstdio>
+
+#include "05_perspective/view_cli.hpp"
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "scene.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Lesson 10, ambient occlusion: lesson 08's scene into a G-buffer, then screen-space "
+        "ambient occlusion darkening the ambient light."};
+    rl::ImageOptions image_options{"10_ambient_occlusion.tga"};
+    perspective::ViewOptions view;
+    occlusion::SceneOptions options;
+    normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
+    occlusion::Show show = occlusion::Show::image;
+    view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
+    perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
+    rl::add_image_options(app, image_options);
+    rl::add_method_option(app, "--ao", options.ao.method, occlusion::kAoMethods,
+                          "How the occlusion is found");
+    app.add_option("--samples", options.ao.samples,
+                   "Depth-buffer reads a pixel (1 to " + std::to_string(occlusion::kMaxAoSamples) +
+                       "; horizon: 8 per slice)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, occlusion::kMaxAoSamples));
+    app.add_option("--radius", options.ao.radius,
+                   "How far an occluder may be, in world units (the floor is 8 wide)")
+        ->capture_default_str()
+        ->check(rl::finite_number(1e-4, 1e4));
+    app.add_option("--blur", options.ao.blur,
+                   "The blur's half width in pixels, within one surface (0 to " +
+                       std::to_string(occlusion::kMaxBlurRadius) + "; 0: none)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, occlusion::kMaxBlurRadius));
+    bool no_rotation = false;
+    app.add_flag("--no-rotation", no_rotation,
+                 "The same kernel at every pixel, not turned by the 4x4 noise");
+    rl::add_method_option(app, "--show", show, occlusion::kShows,
+                          "Write the picture, the occlusion alone, or the picture without it");
+    rl::add_method_option(app, "--normal-map", options.shadow.render.normal_map,
+                          normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
+    rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
+                          "Tangent frames of the --model files (lesson 07)");
+    CLI11_PARSE(app, argc, argv);
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
+
+    return rl::guarded_main("10_ambient_occlusion", [&] {
+        rl::check_image_output(output);
+        options.ao.rotate = !no_rotation;
+        occlusion::check(options.ao);
+        shadows::set_lights(options.shadow, view, false);
+        std::vector<std::string> warnings;
+        const auto [models, camera] =
+            occlusion::load_scene(view, tangents, width, height, warnings);
+        rl::print_warnings("10_ambient_occlusion", warnings);
+        if (options.shadow.render.filter == textures::Filter::trilinear)
+            normal_mapping::build_mip_levels(models);
+        const auto start = std::chrono::steady_clock::now();
+        const occlusion::Frame frame = occlusion::render(models, camera, options, width, height);
+        const auto done = std::chrono::steady_clock::now();
+        rl::save_image(output, occlusion::picture(frame, options, show));
+        const std::chrono::duration<double, std::milli> ms = done - start;
+        std::printf(
+            "%zu models: %zu faces, %zu fragments shaded; %s occlusion (%d samples, radius %g, "
+            "blur %d) in a frame of %.1f ms; %s into %s\n",
+            models.size(), frame.counts.faces, frame.counts.fragments,
+            occlusion::name(options.ao.method), options.ao.samples,
+            static_cast<double>(options.ao.radius), options.ao.blur, ms.count(),
+            occlusion::name(show), output.c_str());
+        return 0;
+    });
+}

@@ -1,0 +1,54 @@
+// Lesson 10's render: lesson 08's scene and direct light into a G-buffer,
+// the ambient occlusion from it, then the picture: the direct light plus
+// the ambient light, which alone the occlusion darkens (the direct light
+// has its shadow map for that).
+//
+//   occlusion::SceneOptions options;  // lesson 08's lights, the AO's defaults
+//   const occlusion::Frame f = occlusion::render(models, camera, options, 800, 800);
+//   rl::save_image("10.tga", occlusion::picture(f, options));
+#pragma once
+
+#include "ambient_occlusion.hpp"
+
+namespace occlusion {
+
+// The light from everywhere (a bright overcast sky's share), times the
+// albedo and the occlusion: ten times lesson 06's ambient term, so that
+// what it lights is worth darkening.
+inline constexpr rl::vec3 kAmbient{0.30f, 0.32f, 0.36f};
+
+// What the program writes: the picture, the occlusion alone as grey, or the
+// picture without occlusion.
+enum class Show { image, ao, unoccluded };
+inline constexpr std::array<rl::Named<Show>, 3> kShowNames = {
+    {{Show::image, "image"}, {Show::ao, "ao"}, {Show::unoccluded, "unoccluded"}}};
+inline constexpr std::array<Show, 3> kShows = rl::values_of(kShowNames);
+inline const char* name(Show value) {
+    return rl::name_in(kShowNames, value);
+}
+
+struct SceneOptions {
+    shadows::ShadowOptions shadow;  // lesson 08's: lights, shadow map, normal maps
+    AoOptions ao;
+    rl::vec3 ambient = kAmbient;
+};
+
+struct Frame {
+    GBuffer g;
+    rl::FloatImage ao;
+    perspective::PipelineCounts counts;
+};
+
+// Both passes and the occlusion, for `camera` at width x height.
+Frame render(const std::vector<normal_mapping::MappedModel>& models,
+             const perspective::Camera& camera, const SceneOptions& options, int width, int height);
+
+// [doc:compose]
+// The picture's light at each pixel: direct + ambient x albedo x occlusion,
+// encoded to sRGB (lesson 06); the background where no model is.
+rl::Image picture(const Frame& f, const SceneOptions& options, Show show = Show::image);
+// [/doc:compose]
+
+using shadows::load_scene;  // lesson 08's scene and camera
+
+}  // namespace occlusion
