@@ -57,7 +57,7 @@ std::optional<DepthPair> depths_at(const Surfaces& surfaces, rl::vec3 s) {
     const rl::vec3 w = surfaces.screen.project(s);
     if (!(w.z > 0) || !surfaces.inside(w.x, w.y))
         return std::nullopt;  // behind the eye, off screen
-    const float buffer = surfaces.depth.get(static_cast<int>(w.x), static_cast<int>(w.y));
+    const float buffer = surfaces.screen.depth_of(surfaces.surface_at(w.x, w.y));
     if (std::isnan(buffer)) return std::nullopt;
     return DepthPair{w.z, buffer};
 }
@@ -99,23 +99,14 @@ float hemisphere(const Surfaces& surfaces, rl::vec3 p, float depth, rl::vec3 n, 
 // [/doc:hemisphere]
 
 // [doc:horizon]
-// The cosine-weighted share of one slice's arc between the horizons h1 < 0
-// < h2 (angles from the eye direction), the normal projected into the slice
-// at angle gamma: the integral of cos(theta - gamma) |sin theta| from h1 to h2.
-float slice_visibility(float h1, float h2, float gamma) {
-    const auto side = [gamma](float h) {
-        return 0.25f * (-std::cos(2 * h - gamma) + std::cos(gamma) + 2 * h * std::sin(gamma));
-    };
-    return side(h1) + side(h2);
-}
-
 float horizon(const Surfaces& surfaces, int x, int y, rl::vec3 p, float depth, rl::vec3 n,
               float turn, float jitter, const AoOptions& o) {
     const Screen& screen = surfaces.screen;
-    const int slices = std::max(1, o.samples / 8), steps = 4;
+    const HorizonSteps split = horizon_steps(o.samples);
+    const int slices = split.slices, steps = split.steps;
     const rl::vec3 v = rl::normalize(screen.eye() - p);
     const float reach = o.radius * screen.pixels_per_unit(depth);  // in pixels
-    float open = 0;
+    float open = 0, unoccluded = 0;
     for (int i = 0; i < slices; ++i) {
         const float phi = kPi * (static_cast<float>(i) + turn) / static_cast<float>(slices);
         const float cx = std::cos(phi), cy = std::sin(phi);
@@ -131,8 +122,7 @@ float horizon(const Surfaces& surfaces, int x, int y, rl::vec3 p, float depth, r
                 const float qx = static_cast<float>(x) + 0.5f + sign * cx * r,
                             qy = static_cast<float>(y) + 0.5f + sign * cy * r;
                 if (!surfaces.inside(qx, qy)) break;  // off the screen: nothing known beyond
-                const rl::vec3 h =
-                    surfaces.position.get(static_cast<int>(qx), static_cast<int>(qy)) - p;
+                const rl::vec3 h = surfaces.surface_at(qx, qy) - p;
                 const float length = rl::length(h);
                 if (!(length > 1e-6f) || length > o.radius) continue;  // NaN: no model
                 highest[side] = std::max(highest[side], rl::dot(h, v) / length);
@@ -149,12 +139,32 @@ float horizon(const Surfaces& surfaces, int x, int y, rl::vec3 p, float depth, r
         const float h2 = std::min(std::acos(std::clamp(highest[0], -1.0f, 1.0f)), gamma + kPi / 2);
         const float h1 = std::max(-std::acos(std::clamp(highest[1], -1.0f, 1.0f)), gamma - kPi / 2);
         open += weight * slice_visibility(h1, h2, gamma);
+        // A slice with nothing in it is not exactly 1 when the normal leans
+        // in it (cos g + g sin g); only the mean over every slice is. With
+        // few slices, dividing by the unoccluded slices' own sum keeps an
+        // open floor at 1 rather than at 0.95 or 1.04 pixel by pixel.
+        unoccluded += weight * slice_visibility(gamma - kPi / 2, gamma + kPi / 2, gamma);
     }
-    return std::clamp(open / static_cast<float>(slices), 0.0f, 1.0f);
+    if (!(unoccluded > 1e-6f)) return 1;
+    return std::clamp(open / unoccluded, 0.0f, 1.0f);
 }
 // [/doc:horizon]
 
 }  // namespace
+
+// [doc:slice-visibility]
+float slice_visibility(float h1, float h2, float gamma) {
+    const auto side = [gamma](float h) {
+        return 0.25f * (-std::cos(2 * h - gamma) + std::cos(gamma) + 2 * h * std::sin(gamma));
+    };
+    return side(h1) + side(h2);
+}
+// [/doc:slice-visibility]
+
+HorizonSteps horizon_steps(int samples) {
+    const int steps = std::clamp(samples / 2, 1, 4);
+    return {std::max(1, samples / (2 * steps)), steps};
+}
 
 void check(const AoOptions& o) {
     if (o.samples < 1 || o.samples > kMaxAoSamples)
@@ -197,6 +207,22 @@ Surfaces::Surfaces(const GBuffer& gbuffer, const Screen& s)
                 depth.at(x, y) = screen.view_depth(g.depth()->get(x, y));
             }
 }
+
+// [doc:surface-at]
+rl::vec3 Surfaces::surface_at(float x, float y) const {
+    const int i = static_cast<int>(x), j = static_cast<int>(y);
+    const rl::vec3 centre = position.get(i, j);
+    if (std::isnan(centre.x)) return centre;
+    const rl::vec3 n = g.colour<kNormal>().get(i, j), ray = screen.ray(x, y);
+    const float facing = rl::dot(ray, n);
+    if (!(std::fabs(facing) > 0.05f)) return centre;
+    const rl::vec3 hit = screen.eye() + ray * (rl::dot(centre - screen.eye(), n) / facing);
+    // Within a pixel's width along the plane (its footprint, stretched by
+    // the slant): farther means the normal does not describe this pixel.
+    const float reach = depth.get(i, j) / screen.pixels_per_unit(1) / std::fabs(facing);
+    return rl::length(hit - centre) <= reach ? hit : centre;
+}
+// [/doc:surface-at]
 
 rl::FloatImage raw_occlusion(const Surfaces& surfaces, const AoOptions& o) {
     check(o);
@@ -256,6 +282,8 @@ rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, 
 // [/doc:surface-blur]
 
 rl::FloatImage ambient_occlusion(const GBuffer& g, const Screen& screen, const AoOptions& o) {
+    check(o);
+    if (o.method == AoMethod::none) return rl::FloatImage(g.width(), g.height(), 1.0f);
     const Surfaces surfaces(g, screen);
     return surface_blur(raw_occlusion(surfaces, o), surfaces, o.blur, o.radius);
 }

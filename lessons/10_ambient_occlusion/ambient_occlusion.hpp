@@ -40,7 +40,7 @@ inline constexpr int kMaxBlurRadius = 8;
 struct AoOptions {
     AoMethod method = AoMethod::horizon;
     // Depth-buffer reads a pixel: ball or half-ball points for crytek and
-    // hemisphere; slices x 2 sides x 4 steps for horizon (at least one slice).
+    // hemisphere; slices x 2 sides x steps for horizon (horizon_steps()).
     int samples = 16;
     float radius = 0.5f;  // world units: what lies farther does not occlude
     int blur = 2;        // the blur's half width in pixels (0: none); 2 covers the noise's 4x4 tile
@@ -65,6 +65,13 @@ struct Surfaces {
         return x >= 0 && y >= 0 && x < static_cast<float>(g.width()) &&
                y < static_cast<float>(g.height());
     }
+    // The surface seen at window point (x, y), inside the screen: where the
+    // ray through it meets the plane of the pixel it falls in (that pixel's
+    // point and normal). The pixel's centre alone is up to half a pixel off
+    // the ray, which on a slanted floor is far enough in depth to hide the
+    // floor from itself. NaN where no model is; the pixel's point where its
+    // plane is nearly edge-on to the ray.
+    rl::vec3 surface_at(float x, float y) const;
 };
 
 // The unblurred methods, and the blur: a pixel averages its neighbours
@@ -73,6 +80,20 @@ struct Surfaces {
 rl::FloatImage raw_occlusion(const Surfaces& surfaces, const AoOptions& options);
 rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, int radius,
                             float ao_radius);
+
+// The horizon method's cosine-weighted share of one slice's arc between the
+// horizons h1 <= 0 <= h2 (angles from the eye direction, towards the slice's
+// +t side), the normal projected into the slice at angle gamma: the integral
+// of cos(theta - gamma) |sin theta| from h1 to h2, in closed form. An open
+// slice seen head-on (h = -pi/2, pi/2, gamma = 0) gives 1.
+float slice_visibility(float h1, float h2, float gamma);
+
+// How the horizon method spends its samples: slices x 2 sides x steps,
+// up to 4 steps a side, then more slices.
+struct HorizonSteps {
+    int slices, steps;
+};
+HorizonSteps horizon_steps(int samples);
 
 // The fixed kernels, in the frame of +z (the normal; crytek's fills the
 // whole ball): point i of n, nearer the centre for small i.

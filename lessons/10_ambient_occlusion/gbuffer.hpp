@@ -69,6 +69,10 @@ class Screen {
     rl::vec3 at_depth(float x, float y, float d) const;
     // Where a world point lands: window x, y and its view depth (w).
     rl::vec3 project(rl::vec3 p) const;
+    // The unit ray from the eye through window point (x, y).
+    rl::vec3 ray(float x, float y) const { return rays_.ray(x, y); }
+    // A world point's view depth.
+    float depth_of(rl::vec3 p) const { return rl::dot(p - eye_, forward_); }
     // How many pixels a length of 1 spans at view depth d (at the screen's centre).
     float pixels_per_unit(float d) const { return focal_ / d; }
     rl::vec3 eye() const { return eye_; }
