@@ -1,5 +1,7 @@
 #include "ambient_occlusion.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -229,7 +231,8 @@ rl::FloatImage raw_occlusion(const Surfaces& surfaces, const AoOptions& o) {
     const GBuffer& g = surfaces.g;
     rl::FloatImage ao(g.width(), g.height(), 1.0f);
     if (o.method == AoMethod::none) return ao;
-    for (int y = 0; y < g.height(); ++y)
+    // Rows on every core: each pixel reads the G-buffer and writes its own.
+    tbb::parallel_for(0, g.height(), [&](int y) {
         for (int x = 0; x < g.width(); ++x) {
             const float depth = surfaces.depth.get(x, y);
             if (std::isnan(depth)) continue;
@@ -247,9 +250,11 @@ rl::FloatImage raw_occlusion(const Surfaces& surfaces, const AoOptions& o) {
                     ao.at(x, y) = horizon(surfaces, x, y, p, depth, n, turn, jitter, o);
                     break;
                 case AoMethod::none:
+                case AoMethod::baked:
                     break;
             }
         }
+    });
     return ao;
 }
 
@@ -260,7 +265,7 @@ rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, 
     if (radius <= 0) return out;
     const GBuffer& g = surfaces.g;
     const float same_plane = 0.1f * ao_radius, same_facing = std::cos(rl::radians(25.0f));
-    for (int y = 0; y < g.height(); ++y)
+    tbb::parallel_for(0, g.height(), [&](int y) {
         for (int x = 0; x < g.width(); ++x) {
             if (std::isnan(surfaces.depth.get(x, y))) continue;
             const rl::vec3 p = surfaces.position.get(x, y), n = g.colour<kNormal>().get(x, y);
@@ -277,6 +282,7 @@ rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, 
                 }
             if (count > 0) out.at(x, y) = sum / count;  // 0 only for a broken normal
         }
+    });
     return out;
 }
 // [/doc:surface-blur]
@@ -284,6 +290,9 @@ rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, 
 rl::FloatImage ambient_occlusion(const GBuffer& g, const Screen& screen, const AoOptions& o) {
     check(o);
     if (o.method == AoMethod::none) return rl::FloatImage(g.width(), g.height(), 1.0f);
+    if (o.method == AoMethod::baked)
+        throw std::invalid_argument(
+            "baked occlusion comes from the models' vertices, not the screen");
     const Surfaces surfaces(g, screen);
     return surface_blur(raw_occlusion(surfaces, o), surfaces, o.blur, o.radius);
 }

@@ -22,14 +22,19 @@ namespace occlusion {
 // points in the half ball above the normal, with a range check.
 // horizon: per slice of directions through the eye, the highest horizon on
 // each side, integrated in closed form against the cosine (ground-truth
-// AO, Jimenez et al. 2016).
-enum class AoMethod { none, crytek, hemisphere, horizon };
-inline constexpr std::array<rl::Named<AoMethod>, 4> kAoMethodNames = {
+// AO, Jimenez et al. 2016). baked: not from the screen; rays cast from
+// every vertex at load time (baked_ao.hpp), `samples` rays each.
+enum class AoMethod { none, crytek, hemisphere, horizon, baked };
+inline constexpr std::array<rl::Named<AoMethod>, 5> kAoMethodNames = {
     {{AoMethod::none, "none"},
      {AoMethod::crytek, "crytek"},
      {AoMethod::hemisphere, "hemisphere"},
-     {AoMethod::horizon, "horizon"}}};
-inline constexpr std::array<AoMethod, 4> kAoMethods = rl::values_of(kAoMethodNames);
+     {AoMethod::horizon, "horizon"},
+     {AoMethod::baked, "baked"}}};
+inline constexpr std::array<AoMethod, 5> kAoMethods = rl::values_of(kAoMethodNames);
+// The methods that read the screen (the G-buffer) alone.
+inline constexpr std::array<AoMethod, 3> kScreenSpaceAoMethods = {
+    AoMethod::crytek, AoMethod::hemisphere, AoMethod::horizon};
 inline const char* name(AoMethod value) {
     return rl::name_in(kAoMethodNames, value);
 }
@@ -50,7 +55,8 @@ struct AoOptions {
 // Throws std::invalid_argument naming the option outside its range.
 void check(const AoOptions& options);
 
-// Per pixel, 0 (closed) to 1 (open); 1 where no model is.
+// Per pixel, 0 (closed) to 1 (open); 1 where no model is. Throws
+// std::invalid_argument for the baked method, which needs the models.
 rl::FloatImage ambient_occlusion(const GBuffer& g, const Screen& screen, const AoOptions& options);
 
 // What every method reads, found once per frame from the depth buffer:

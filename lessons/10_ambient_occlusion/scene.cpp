@@ -1,5 +1,6 @@
 #include "scene.hpp"
 
+#include <optional>
 #include <utility>
 
 #include "06_shading/colour.hpp"
@@ -7,14 +8,23 @@
 namespace occlusion {
 
 Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const SceneOptions& options, int width,
-             int height) {
+             const perspective::Camera& camera, const SceneOptions& options, int width, int height,
+             const BakedAo* baked) {
     check(options.ao);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, options.shadow);
     perspective::PipelineCounts counts;
     GBuffer g = render_gbuffer(models, camera, options.shadow, map, width, height, &counts);
-    rl::FloatImage ao = ambient_occlusion(g, Screen(camera, width, height), options.ao);
+    if (options.ao.method != AoMethod::baked) {
+        rl::FloatImage ao = ambient_occlusion(g, Screen(camera, width, height), options.ao);
+        return {std::move(g), std::move(ao), counts};
+    }
+    std::optional<BakedAo> own;
+    if (!baked) {
+        own = bake_vertex_ao(models, RayTracedAo(models), options.ao.radius, options.ao.samples);
+        baked = &*own;
+    }
+    rl::FloatImage ao = draw_baked(models, camera, options.shadow, map, *baked, width, height);
     return {std::move(g), std::move(ao), counts};
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "ambient_occlusion.hpp"
+#include "baked_ao.hpp"
 
 namespace occlusion {
 
@@ -39,9 +40,12 @@ struct Frame {
     perspective::PipelineCounts counts;
 };
 
-// Both passes and the occlusion, for `camera` at width x height.
+// Both passes and the occlusion, for `camera` at width x height. The baked
+// method reads `baked` (bake_vertex_ao with the same radius), or bakes
+// here, within the frame, when given none.
 Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const SceneOptions& options, int width, int height);
+             const perspective::Camera& camera, const SceneOptions& options, int width, int height,
+             const BakedAo* baked = nullptr);
 
 // [doc:compose]
 // The picture's light at each pixel: direct + ambient x albedo x occlusion,

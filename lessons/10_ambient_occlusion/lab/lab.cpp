@@ -7,8 +7,11 @@
 // depth edges, and the mean near them (halos). Sweeps:
 //   1. every method at 4 to 128 samples, with the default blur and without;
 //   2. the radius, for the default method and samples (each radius its own truth);
-//   3. the same kernel at every pixel (no rotation).
-// Writes 10_methods.csv and 10_radius.csv.
+//   3. the same kernel at every pixel (no rotation);
+//   4. baked per vertex, 16 to 1024 rays a vertex (the frame draws it; the
+//      bake is timed once, apart);
+// and the G-buffer pass itself. Writes 10_methods.csv, 10_radius.csv and
+// 10_passes.csv.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
@@ -29,7 +32,20 @@ using namespace occlusion;
 struct Setup {
     const GBuffer* g = nullptr;
     const Screen* screen = nullptr;
+    // For the baked method: what draw_baked needs, and the bakes by rays a vertex.
+    const std::vector<normal_mapping::MappedModel>* models = nullptr;
+    const perspective::Camera* camera = nullptr;
+    const shadows::ShadowOptions* shadow = nullptr;
+    const shadows::ShadowMap* map = nullptr;
+    std::map<int, BakedAo> bakes;
 };
+
+// The method's occlusion from the setup's G-buffer (or, baked, its draw).
+rl::FloatImage occlusion_of(const Setup& s, const AoOptions& o) {
+    if (o.method != AoMethod::baked) return ambient_occlusion(*s.g, *s.screen, o);
+    return draw_baked(*s.models, *s.camera, *s.shadow, *s.map, s.bakes.at(o.samples), s.g->width(),
+                      s.g->height());
+}
 
 struct Case {
     std::string group;
@@ -42,9 +58,17 @@ std::string label(const AoOptions& o) {
            (o.rotate ? "" : ", no rotation");
 }
 
+void time_gbuffer(benchmark::State& state, const Setup* s) {
+    for (auto _ : state) {
+        const GBuffer g = render_gbuffer(*s->models, *s->camera, *s->shadow, *s->map, s->g->width(),
+                                         s->g->height());
+        benchmark::DoNotOptimize(g.depth()->get(0, 0));
+    }
+}
+
 void time_ao(benchmark::State& state, const Setup* s, const Case* c) {
     for (auto _ : state) {
-        const rl::FloatImage ao = ambient_occlusion(*s->g, *s->screen, c->ao);
+        const rl::FloatImage ao = occlusion_of(*s, c->ao);
         benchmark::DoNotOptimize(ao.get(0, 0));
     }
 }
@@ -68,7 +92,8 @@ int main(int argc, char** argv) {
         const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, 1, scene.shadow);
         const GBuffer g = render_gbuffer(models, camera, scene.shadow, map, size, size);
         const Screen screen(camera, size, size);
-        const Setup setup{&g, &screen};
+        Setup setup{&g, &screen, &models, &camera, &scene.shadow, &map, {}};
+        const RayTracedAo rays(models);
 
         std::vector<Case> cases;
         const AoOptions base;
@@ -81,6 +106,18 @@ int main(int argc, char** argv) {
                     o.method = m, o.samples = n, o.blur = blur;
                     cases.push_back({"methods", o});
                 }
+        // Baked: `samples` rays a vertex, baked once before the timing.
+        std::map<int, double> bake_ms;
+        for (int n : options.quick ? std::vector<int>{16} : std::vector<int>{16, 64, 256, 1024}) {
+            const auto start = std::chrono::steady_clock::now();
+            setup.bakes.emplace(n, bake_vertex_ao(models, rays, base.radius, n));
+            bake_ms[n] =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
+            AoOptions o = base;
+            o.method = AoMethod::baked, o.samples = n, o.blur = 0;
+            cases.push_back({"methods", o});
+        }
         const std::size_t method_cases = cases.size();
         for (float r : {0.125f, 0.25f, 0.5f, 1.0f, 2.0f}) {
             AoOptions o = base;
@@ -95,17 +132,18 @@ int main(int argc, char** argv) {
         const auto bench_name = [](const Case& c) {
             return "ao/" + c.group + "/" + label(c.ao) + "/r" + std::to_string(c.ao.radius);
         };
+        benchmark::RegisterBenchmark("gbuffer", time_gbuffer, &setup)
+            ->Unit(benchmark::kMillisecond);
         for (const Case& c : cases)
             benchmark::RegisterBenchmark(bench_name(c).c_str(), time_ao, &setup, &c)
                 ->Unit(benchmark::kMillisecond);
         const auto timings = rl::lab::run_benchmarks();
 
-        const RayTracedAo rays(models);
         std::map<float, TruthFrame> truths;  // by radius
         const auto truth_for = [&](float radius) -> const TruthFrame& {
             if (!truths.count(radius)) {
                 const auto start = std::chrono::steady_clock::now();
-                truths.emplace(radius, rays.frame(camera, size, size, radius, truth_rays));
+                truths.emplace(radius, truth_frame(rays, camera, size, size, radius, truth_rays));
                 const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
                 std::printf("truth at radius %g: %d rays a pixel in %.1f s\n",
                             static_cast<double>(radius), truth_rays, took.count());
@@ -114,11 +152,11 @@ int main(int argc, char** argv) {
         };
         const std::vector<std::string> columns = {
             "method", "samples",    "blur",      "rotate",     "radius", "ms_per_frame", "ms_min",
-            "ms_max", "mean_error", "p95_error", "edge_error", "pixels", "edge_pixels"};
+            "ms_max", "mean_error", "p95_error", "edge_error", "pixels", "edge_pixels",  "bake_ms"};
         rl::ResultsTable methods(columns), radius(columns);
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const Case& c = cases[i];
-            const rl::FloatImage ao = ambient_occlusion(g, screen, c.ao);
+            const rl::FloatImage ao = occlusion_of(setup, c.ao);
             const AoError e = compare(truth_for(c.ao.radius), ao, g, screen, c.ao.radius);
             const rl::lab::Timing& t = timings.at(bench_name(c));
             (i < method_cases || c.group == "methods" ? methods : radius)
@@ -127,11 +165,16 @@ int main(int argc, char** argv) {
                           std::string(c.ao.rotate ? "yes" : "no"), static_cast<double>(c.ao.radius),
                           t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6, e.mean, e.p95,
                           e.edge_mean, static_cast<long long>(e.pixels),
-                          static_cast<long long>(e.edge_pixels)});
+                          static_cast<long long>(e.edge_pixels),
+                          c.ao.method == AoMethod::baked ? bake_ms.at(c.ao.samples) : 0.0});
         }
+        rl::ResultsTable passes({"pass", "ms_per_frame", "ms_min", "ms_max"});
+        const rl::lab::Timing& t = timings.at("gbuffer");
+        passes.add_row({std::string("gbuffer"), t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6});
         methods.write_csv(options.out_dir / "10_methods.csv");
         radius.write_csv(options.out_dir / "10_radius.csv");
-        std::printf("wrote 10_methods.csv and 10_radius.csv to %s\n",
+        passes.write_csv(options.out_dir / "10_passes.csv");
+        std::printf("wrote 10_methods.csv, 10_radius.csv and 10_passes.csv to %s\n",
                     options.out_dir.string().c_str());
         return 0;
     });

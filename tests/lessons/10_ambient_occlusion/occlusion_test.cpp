@@ -122,7 +122,7 @@ TEST(Rotation, TheTileHoldsEachTurnOnce) {
 TEST(Occlusion, ALoneFloorIsOpen) {
     const std::vector<MappedModel> scene = {floor_of(4)};
     const Rendered r = gbuffer_of(scene, camera_at({0.3f, 1.5f, 3.5f}, {0, 0, 0}), 96);
-    for (AoMethod m : kAoMethods) {
+    for (AoMethod m : kScreenSpaceAoMethods) {
         AoOptions o;
         o.method = m, o.samples = 16, o.radius = 0.5f;
         const rl::FloatImage ao = ambient_occlusion(r.g, r.screen, o);
@@ -183,7 +183,7 @@ TEST(Occlusion, TheRangeCheckKeepsAFarEdgeOffTheFloor) {
     const perspective::Camera camera = camera_at({0, 2, 4}, {0, 0, -1});
     const Rendered r = gbuffer_of(scene, camera, 128);
     const RayTracedAo truth(scene);
-    const TruthFrame t = truth.frame(camera, 128, 128, 0.5, 256);
+    const TruthFrame t = truth_frame(truth, camera, 128, 128, 0.5, 256);
     AoOptions o;
     o.samples = 32, o.radius = 0.5f, o.blur = 0;
     double error[2] = {0, 0};
@@ -222,7 +222,7 @@ TEST(Occlusion, ExtremeRadiiAndViewsGiveSharesInZeroToOne) {
           camera_at({-3, 0.01f, 0}, {0, 0.01f, 0})})
         for (float radius : {1e-4f, 0.5f, 1e3f}) {
             const Rendered r = gbuffer_of(scene, camera, 48);
-            for (AoMethod m : kAoMethods) {
+            for (AoMethod m : kScreenSpaceAoMethods) {
                 AoOptions o;
                 o.method = m, o.samples = 8, o.radius = radius;
                 const rl::FloatImage ao = ambient_occlusion(r.g, r.screen, o);
@@ -245,3 +245,60 @@ TEST(Occlusion, RefusesOptionsOutsideTheirRanges) {
 }
 
 }  // namespace
+
+// Baking knows only its vertices. Beside the wall, the floor's vertices on
+// the wall's line are half closed (the wall fills half of what they see,
+// cosine-weighted; a quarter at its ends), the next ones, a metre away, are open; a point 0.25
+// from the wall, between them, gets their blend, not its own 0.80.
+TEST(Baked, KnowsOnlyItsVertices) {
+    const std::vector<MappedModel> scene = {floor_of(4), wall_at(1, 4)};
+    const RayTracedAo rays(scene);
+    const BakedAo baked = bake_vertex_ao(scene, rays, 0.5, 1024);
+    ASSERT_EQ(baked.corners.size(), 2u);
+    const rl::Mesh& floor = scene[0].lit.model.mesh;
+    int on_line = 0;
+    for (std::size_t f = 0; f < floor.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const rl::vec3 q = 4.0f * floor.position(floor.faces[f], k);  // the model's scale
+            const float x = q.x, a = baked.corners[0][3 * f + static_cast<std::size_t>(k)];
+            if (std::fabs(q.z) > 3.9f) continue;  // the wall's ends: a quarter closed
+            if (std::fabs(x - 1) < 1e-4f) {
+                EXPECT_NEAR(a, 0.5, 0.03);
+                ++on_line;
+            } else {
+                EXPECT_EQ(a, 1.0f) << x;
+            }
+        }
+    EXPECT_GT(on_line, 8);
+    // Drawn: the floor 0.25 from the wall reads the blend of 1 and 0.5.
+    const perspective::Camera camera = camera_at({-1.5f, 1.8f, 3.0f}, {0.6f, 0, 0});
+    shadows::ShadowOptions options;
+    shadows::set_lights(options, perspective::ViewOptions{}, false);
+    const shadows::ShadowMap map = shadows::shadow_map_for(scene, camera, 1, options);
+    const rl::FloatImage ao = draw_baked(scene, camera, options, map, baked, 160, 160);
+    const Rendered r = gbuffer_of(scene, camera, 160);
+    int checked = 0;
+    for (int y = 0; y < 160; ++y)
+        for (int x = 0; x < 160; ++x) {
+            const std::optional<rl::vec3> p = r.screen.position(r.g, x, y);
+            if (!p || std::fabs(p->y) > 1e-3f || p->x < 0.02f || p->x > 0.98f ||
+                std::fabs(p->z) > 2.9f)
+                continue;
+            EXPECT_NEAR(ao.get(x, y), 1 - 0.5 * p->x, 0.03) << x << "," << y;
+            ++checked;
+        }
+    EXPECT_GT(checked, 200);
+    EXPECT_NEAR(1 - 0.5 * 0.75, 0.625, 1e-9);  // against the truth's 0.8045 at 0.25
+}
+
+TEST(Baked, RefusesRaysOutsideTheCaps) {
+    const std::vector<MappedModel> scene = {floor_of(1)};
+    const RayTracedAo rays(scene);
+    EXPECT_THROW(bake_vertex_ao(scene, rays, 0.5, 0), std::invalid_argument);
+    EXPECT_THROW(bake_vertex_ao(scene, rays, 0.5, kMaxBakeRays + 1), std::invalid_argument);
+    // 700 floors of 128 faces: 268800 corners x 4096 rays is past 2^30,
+    // refused before a ray is cast.
+    const std::vector<MappedModel> many(700, scene[0]);
+    EXPECT_THROW(bake_vertex_ao(many, rays, 0.5, kMaxBakeRays), std::invalid_argument);
+    EXPECT_NO_THROW(bake_vertex_ao(scene, rays, 0.5, 16));
+}
