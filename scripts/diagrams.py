@@ -29,6 +29,10 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   09_microfacets.svg         a rough surface as tiny mirrors: the facets facing h, one shadowed, one masked
   09_lobe_lean.svg           GGX's one-bounce lobe seen head-on and at 75 degrees, against the mirror direction
   09_split_sum.svg           the split sum's two halves: the BRDF's albedo over n.v and roughness, the lobes that blur the light
+  10_kernels.svg             Crytek's ball and the hemisphere's half ball at a floor point beside a box,
+                             the samples the depth buffer hides, and the range check
+  10_horizon.svg             one slice through the eye: the horizons h1 and h2, the normal's angle gamma,
+                             and the open arc between them
   12_tiles_and_bins.svg      a frame cut into tiles, each tile's bin of triangles, the owning thread
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
@@ -1287,6 +1291,99 @@ def split_sum(out):
     save(figure, out, "09_split_sum.svg")
 
 
+def ao_kernel_panel(axes, title, half):
+    """A floor point p beside a box, seen from the side; the eye up and to the left."""
+    axes.add_patch(Rectangle((-1.6, -0.3), 3.4, 0.3, color=SOFT))
+    axes.plot([-1.6, 1.8], [0, 0], color=INK, lw=1.2)
+    axes.add_patch(Rectangle((0.55, 0), 0.9, 0.9, facecolor="#d8d8d8", edgecolor=INK, lw=1.2))
+    axes.add_patch(plt.Circle((0, 0), 1.0, fill=False, ls="--", color=INK, lw=0.8))
+    points = [(math.cos(a) * r, math.sin(a) * r)
+              for a, r in [(0.3, 0.8), (1.0, 0.55), (2.0, 0.7), (2.6, 0.4), (0.15, 0.35),
+                           (-0.5, 0.6), (-1.9, 0.5), (-2.7, 0.8), (-1.2, 0.3), (1.5, 0.9)]]
+    hidden = 0
+    for x, y in points:
+        if half and y < 0:
+            continue
+        inside_box = 0.55 <= x <= 1.45 and 0 <= y <= 0.9
+        below = y < 0
+        closed = inside_box or below
+        hidden += closed
+        axes.plot(x, y, "o", ms=5, color=ACCENT if closed else LINE)
+    axes.plot(0, 0, "o", ms=6, color=INK)
+    axes.text(0, -0.15, "p", ha="center", va="top", fontsize=9)
+    shown = sum(1 for x, y in points if not half or y >= 0)
+    axes.set_title(f"{title}\n{hidden} of {shown} samples hidden", fontsize=9)
+    axes.set_xlim(-1.7, 1.9)
+    axes.set_ylim(-1.1, 1.2)
+    axes.set_aspect("equal")
+    axes.axis("off")
+
+
+def ao_kernels(out):
+    figure, (left, middle, right) = plt.subplots(1, 3, figsize=(10, 3.6))
+    ao_kernel_panel(left, "Crytek: a ball, no normal", half=False)
+    ao_kernel_panel(middle, "hemisphere: the half ball above n", half=True)
+    # The range check: a near object's edge in front of p on screen.
+    right.add_patch(Rectangle((-1.6, -0.3), 3.4, 0.3, color=SOFT))
+    right.plot([-1.6, 1.8], [0, 0], color=INK, lw=1.2)
+    right.add_patch(Rectangle((-0.9, 1.6), 0.7, 0.5, facecolor="#d8d8d8", edgecolor=INK, lw=1.2))
+    eye = (-1.5, 2.9)
+    right.plot(*eye, "s", color=INK)
+    right.text(eye[0] + 0.1, eye[1], "eye", fontsize=8, va="center")
+    sample = (0.35, 0.35)
+    right.plot([eye[0], sample[0]], [eye[1], sample[1]], color=LINE, lw=0.8, ls=":")
+    right.plot(*sample, "o", ms=5, color=ACCENT)
+    right.plot(0, 0, "o", ms=6, color=INK)
+    right.text(0, -0.15, "p", ha="center", va="top", fontsize=9)
+    right.add_patch(plt.Circle((0, 0), 0.6, fill=False, ls="--", color=INK, lw=0.8))
+    right.annotate("the depth buffer here holds the box:\nnearer than the sample, so 'hidden';\n"
+                   "but the box is far from p (gap > radius):\nthe range check lets it count ~0",
+                   (-0.45, 1.6), (0.1, 1.25), fontsize=7.5, arrowprops=dict(arrowstyle="->", lw=0.8))
+    right.set_title("the range check: no halo from a far edge", fontsize=9)
+    right.set_xlim(-1.7, 1.9)
+    right.set_ylim(-0.5, 3.2)
+    right.set_aspect("equal")
+    right.axis("off")
+    save(figure, out, "10_kernels.svg")
+
+
+def ao_horizon(out):
+    figure, axes = plt.subplots(figsize=(6.4, 3.9))
+    # The slice: the plane through the eye direction v (up) and a screen direction t (across).
+    ground = [(-2.2, 0.0), (-0.9, 0.0), (-0.6, 0.0), (0.0, 0.0), (0.8, 0.0), (1.0, 0.0), (1.0, 0.9), (1.6, 0.9), (1.6, 0.0), (2.3, 0.0)]
+    ground = [(x, y - 0.15 * x) for x, y in ground]  # a slope: the normal leans
+    axes.add_patch(Polygon(ground + [(2.3, -0.8), (-2.2, -0.8)], color=SOFT))
+    axes.plot([x for x, _ in ground], [y for _, y in ground], color=INK, lw=1.4)
+    slope = math.atan(-0.15)
+    n = (-math.sin(slope), math.cos(slope))
+    gamma = math.atan2(n[0], n[1])
+    corner = ground[6]
+    h2 = math.atan2(corner[0], corner[1])  # from v (up), towards +t
+    h1 = gamma - math.pi / 2  # nothing on the left: the tangent plane bounds it
+    r = 1.7
+    for angle, label, colour in [(h1, "h1 (the tangent plane)", LINE), (h2, "h2 (the box's corner)", ACCENT)]:
+        axes.plot([0, r * math.sin(angle)], [0, r * math.cos(angle)], color=colour, lw=1.3)
+        axes.text(r * math.sin(angle) * 1.04, r * math.cos(angle) * 1.04 + 0.15, label, color=colour,
+                  fontsize=8, ha="left" if angle > 0 else "right")
+    arc = [h1 + (h2 - h1) * i / 60 for i in range(61)]
+    axes.fill([0] + [0.7 * math.sin(a) for a in arc], [0] + [0.7 * math.cos(a) for a in arc],
+              color="#c8dcf4", zorder=0)
+    axes.annotate("", (0, 1.5), (0, 0), arrowprops=dict(arrowstyle="->", color=INK, lw=1.4))
+    axes.text(0.05, 1.55, "v (to the eye)", fontsize=8)
+    axes.annotate("", (1.2 * n[0], 1.2 * n[1]), (0, 0), arrowprops=dict(arrowstyle="->", color="#208040", lw=1.4))
+    axes.text(1.2 * n[0] + 0.05, 1.2 * n[1] - 0.1, "n", color="#208040", fontsize=9)
+    axes.text(-0.1, 0.38, "open", fontsize=8, ha="right")
+    axes.text(0, -1.0, "open share of the slice = the cosine-weighted integral from h1 to h2\n"
+              "(closed form in gamma, the angle from v to n); averaged over slices turned about v",
+              ha="center", fontsize=7.5)
+    axes.plot(0, 0, "o", color=INK, ms=5)
+    axes.set_xlim(-2.3, 2.4)
+    axes.set_ylim(-1.2, 2.0)
+    axes.set_aspect("equal")
+    axes.axis("off")
+    save(figure, out, "10_horizon.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
@@ -1294,7 +1391,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum):
+                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon):
         draw(out)
 
 

@@ -202,12 +202,13 @@ Surfaces::Surfaces(const GBuffer& gbuffer, const Screen& s)
       screen(s),
       depth(g.width(), g.height(), NAN),
       position(g.width(), g.height(), rl::vec3{NAN, NAN, NAN}) {
-    for (int y = 0; y < g.height(); ++y)
+    tbb::parallel_for(0, g.height(), [&](int y) {
         for (int x = 0; x < g.width(); ++x)
             if (const std::optional<rl::vec3> p = screen.position(g, x, y)) {
                 position.at(x, y) = *p;
                 depth.at(x, y) = screen.view_depth(g.depth()->get(x, y));
             }
+    });
 }
 
 // [doc:surface-at]

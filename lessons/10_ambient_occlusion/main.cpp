@@ -42,8 +42,10 @@ int main(int argc, char** argv) {
     bool no_rotation = false;
     app.add_flag("--no-rotation", no_rotation,
                  "The same kernel at every pixel, not turned by the 4x4 noise");
-    rl::add_method_option(app, "--show", show, occlusion::kShows,
-                          "Write the picture, the occlusion alone, or the picture without it");
+    rl::add_method_option(
+        app, "--show", show, occlusion::kShows,
+        "Write the picture, the occlusion alone, the picture without it, or one of the "
+        "G-buffer's images");
     rl::add_method_option(app, "--normal-map", options.shadow.render.normal_map,
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
@@ -74,7 +76,8 @@ int main(int argc, char** argv) {
         const occlusion::Frame frame =
             occlusion::render(models, camera, options, width, height, baked ? &*baked : nullptr);
         const auto done = Clock::now();
-        rl::save_image(output, occlusion::picture(frame, options, show));
+        const occlusion::Screen screen(camera, width, height);
+        rl::save_image(output, occlusion::picture(frame, options, show, &screen));
         const std::chrono::duration<double, std::milli> ms = done - start, bake = start - load;
         if (baked)
             std::printf("baked %d rays a vertex in %.1f ms\n", options.ao.samples, bake.count());

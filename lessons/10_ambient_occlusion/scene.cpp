@@ -1,6 +1,9 @@
 #include "scene.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "06_shading/colour.hpp"
@@ -28,21 +31,58 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
     return {std::move(g), std::move(ao), counts};
 }
 
-rl::Image picture(const Frame& f, const SceneOptions& options, Show show) {
+rl::Image picture(const Frame& f, const SceneOptions& options, Show show, const Screen* screen) {
     rl::Image out(f.g.width(), f.g.height(), rl::kBackground);
     const float clear = f.g.depth_state.clear;
+    // The depth image's range: the nearest and farthest view depths seen.
+    float nearest = INFINITY, farthest = 0;
+    if (show == Show::depth) {
+        if (!screen) throw std::invalid_argument("the depth image needs the frame's screen");
+        for (float z : f.g.depth()->pixels())
+            if (z < clear) {
+                nearest = std::min(nearest, screen->view_depth(z));
+                farthest = std::max(farthest, screen->view_depth(z));
+            }
+    }
     for (int y = 0; y < f.g.height(); ++y)
         for (int x = 0; x < f.g.width(); ++x) {
-            if (!(f.g.depth()->get(x, y) < clear)) continue;
+            const float z = f.g.depth()->get(x, y);
+            if (!(z < clear)) continue;
             const float ao = f.ao.get(x, y);
-            if (show == Show::ao) {
-                out.set(x, y, shading::encode(rl::vec3{ao, ao, ao}, shading::Output::naive));
-                continue;
+            rl::vec3 grey{ao, ao, ao};
+            switch (show) {
+                case Show::ao:
+                    break;
+                case Show::direct:
+                    out.set(
+                        x, y,
+                        shading::encode(f.g.colour<kDirect>().get(x, y), shading::Output::srgb));
+                    continue;
+                case Show::albedo:
+                    out.set(
+                        x, y,
+                        shading::encode(f.g.colour<kAlbedo>().get(x, y), shading::Output::srgb));
+                    continue;
+                case Show::normal:
+                    grey = (f.g.colour<kNormal>().get(x, y) + rl::vec3{1, 1, 1}) * 0.5f;
+                    break;
+                case Show::depth: {
+                    const float t = farthest > nearest
+                                        ? (screen->view_depth(z) - nearest) / (farthest - nearest)
+                                        : 0.0f;
+                    grey = rl::vec3{1, 1, 1} * (1 - t);
+                    break;
+                }
+                case Show::image:
+                case Show::unoccluded: {
+                    const float open = show == Show::unoccluded ? 1.0f : ao;
+                    const rl::vec3 light = f.g.colour<kDirect>().get(x, y) +
+                                           options.ambient * f.g.colour<kAlbedo>().get(x, y) * open;
+                    out.set(x, y, shading::encode(light, shading::Output::srgb));
+                    continue;
+                }
             }
-            const float open = show == Show::unoccluded ? 1.0f : ao;
-            const rl::vec3 light = f.g.colour<kDirect>().get(x, y) +
-                                   options.ambient * f.g.colour<kAlbedo>().get(x, y) * open;
-            out.set(x, y, shading::encode(light, shading::Output::srgb));
+            out.set(x, y, shading::encode(grey, shading::Output::naive));
         }
     return out;
 }

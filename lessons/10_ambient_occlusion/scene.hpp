@@ -18,12 +18,19 @@ namespace occlusion {
 // what it lights is worth darkening.
 inline constexpr rl::vec3 kAmbient{0.30f, 0.32f, 0.36f};
 
-// What the program writes: the picture, the occlusion alone as grey, or the
-// picture without occlusion.
-enum class Show { image, ao, unoccluded };
-inline constexpr std::array<rl::Named<Show>, 3> kShowNames = {
-    {{Show::image, "image"}, {Show::ao, "ao"}, {Show::unoccluded, "unoccluded"}}};
-inline constexpr std::array<Show, 3> kShows = rl::values_of(kShowNames);
+// What the program writes: the picture, the occlusion alone as grey, the
+// picture without occlusion, or one of the G-buffer's images (the direct
+// light, the albedo, the normal as colour (n + 1) / 2, the view depth as
+// grey from near, white, to far, black).
+enum class Show { image, ao, unoccluded, direct, albedo, normal, depth };
+inline constexpr std::array<rl::Named<Show>, 7> kShowNames = {{{Show::image, "image"},
+                                                               {Show::ao, "ao"},
+                                                               {Show::unoccluded, "unoccluded"},
+                                                               {Show::direct, "direct"},
+                                                               {Show::albedo, "albedo"},
+                                                               {Show::normal, "normal"},
+                                                               {Show::depth, "depth"}}};
+inline constexpr std::array<Show, 7> kShows = rl::values_of(kShowNames);
 inline const char* name(Show value) {
     return rl::name_in(kShowNames, value);
 }
@@ -50,7 +57,8 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
 // [doc:compose]
 // The picture's light at each pixel: direct + ambient x albedo x occlusion,
 // encoded to sRGB (lesson 06); the background where no model is.
-rl::Image picture(const Frame& f, const SceneOptions& options, Show show = Show::image);
+rl::Image picture(const Frame& f, const SceneOptions& options, Show show = Show::image,
+                  const Screen* screen = nullptr);  // for Show::depth
 // [/doc:compose]
 
 using shadows::load_scene;  // lesson 08's scene and camera
