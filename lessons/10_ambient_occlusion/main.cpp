@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
         rl::check_image_output(output);
         options.ao.rotate = !no_rotation;
         occlusion::check(options.ao);
+        occlusion::check_frame_size(width, height);
         shadows::set_lights(options.shadow, view, false);
         std::vector<std::string> warnings;
         const auto [models, camera] =

@@ -4,16 +4,27 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "06_shading/colour.hpp"
 
 namespace occlusion {
 
+void check_frame_size(int width, int height) {
+    const long long pixels = static_cast<long long>(width) * height;
+    if (pixels > kMaxFramePixels)
+        throw std::invalid_argument(
+            "a frame of " + std::to_string(width) + "x" + std::to_string(height) +
+            " is past lesson 10's cap of 2^24 pixels (4096x4096): its G-buffer and occlusion "
+            "hold about 80 bytes a pixel");
+}
+
 Frame render(const std::vector<normal_mapping::MappedModel>& models,
              const perspective::Camera& camera, const SceneOptions& options, int width, int height,
              const BakedAo* baked) {
     check(options.ao);
+    check_frame_size(width, height);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, options.shadow);
     perspective::PipelineCounts counts;

@@ -47,6 +47,14 @@ struct Frame {
     perspective::PipelineCounts counts;
 };
 
+// A frame holds about 80 bytes a pixel (the G-buffer's three float colours
+// and depth, the occlusion's points and depths, two occlusion images): its
+// pixels are capped at 2^24 (4096 x 4096, about 1.3 GB), not at the 2^28
+// every other lesson allows.
+inline constexpr long long kMaxFramePixels = 1LL << 24;
+// Throws std::invalid_argument naming the cap when width x height is past it.
+void check_frame_size(int width, int height);
+
 // Both passes and the occlusion, for `camera` at width x height. The baked
 // method reads `baked` (bake_vertex_ao with the same radius), or bakes
 // here, within the frame, when given none.
