@@ -22,6 +22,7 @@ PROGRAMS = {
     "07": "07_normal_mapping",
     "08": "08_shadows",
     "09": "09_environment",
+    "10": "10_ambient_occlusion",
     "12": "12_fast",
 }
 

@@ -207,6 +207,23 @@ def test_lesson09_white_metal(programs):
                         1, 1, 1, "--roughness", 1, "--map-size", 16, "--glossy-size", 16, *SIZE))
 
 
+def test_lesson10_default(programs):
+    same(rasterlab.lesson10.render(**SMALL), programs.image("10", *SIZE))
+
+
+@pytest.mark.parametrize("ao", ["crytek", "hemisphere", "baked"])
+def test_lesson10_methods(programs, ao):
+    same(rasterlab.lesson10.render(ao=ao, samples=8, radius=0.8, blur=1, rotation=False,
+                                   show="ao", **SMALL),
+         programs.image("10", "--ao", ao, "--samples", 8, "--radius", 0.8, "--blur", 1,
+                        "--no-rotation", "--show", "ao", *SIZE))
+
+
+def test_lesson10_gbuffer_depth(programs):
+    same(rasterlab.lesson10.render(show="depth", normal_map="none", **SMALL),
+         programs.image("10", "--show", "depth", "--normal-map", "none", *SIZE))
+
+
 @pytest.mark.parametrize("threads", [1, 2])
 def test_lesson12(programs, threads):
     same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),
