@@ -281,7 +281,9 @@ def draw_lines(plt, rows, options):
                     sys.exit(f"{options.csv}: the line '{label}'{where} has several points at one "
                              f"{options.x}: its rows differ in a column the chart does not split "
                              "by (give it --panel, --style or --where)")
-                if points and all(p[1] == 0 for p in points):
+                if not points:  # e.g. a method measured at one style only: no empty legend entry
+                    continue
+                if all(p[1] == 0 for p in points):
                     flat.append(label)
                     continue
                 axes.plot(xs, [p[1] for p in points], linestyle=dashes[j % len(dashes)],
