@@ -10,6 +10,8 @@
 //   3. the same kernel at every pixel (no rotation);
 //   4. baked per vertex, 16 to 1024 rays a vertex (the frame draws it; the
 //      bake is timed once, apart);
+//   5. the anchor: tinyrenderer's SSAO as its lesson runs it (128 random
+//      points a pixel, no blur), ported in tinyrenderer_ssao.hpp;
 // and the G-buffer pass itself. Writes 10_methods.csv, 10_radius.csv and
 // 10_passes.csv.
 #include <benchmark/benchmark.h>
@@ -24,6 +26,7 @@
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
+#include "tinyrenderer_ssao.hpp"
 
 namespace {
 
@@ -40,20 +43,27 @@ struct Setup {
     std::map<int, BakedAo> bakes;
 };
 
-// The method's occlusion from the setup's G-buffer (or, baked, its draw).
-rl::FloatImage occlusion_of(const Setup& s, const AoOptions& o) {
-    if (o.method != AoMethod::baked) return ambient_occlusion(*s.g, *s.screen, o);
-    return draw_baked(*s.models, *s.camera, *s.shadow, *s.map, s.bakes.at(o.samples), s.g->width(),
-                      s.g->height());
-}
-
 struct Case {
     std::string group;
     AoOptions ao;
+    bool tinyrenderer = false;  // the anchor's port instead of ao's method
 };
 
-std::string label(const AoOptions& o) {
-    return std::string(name(o.method)) + ", " + std::to_string(o.samples) + " samples" +
+// The case's occlusion from the setup's G-buffer (or, baked, its draw).
+rl::FloatImage occlusion_of(const Setup& s, const Case& c) {
+    if (c.tinyrenderer) return tinyrenderer_ssao(Surfaces(*s.g, *s.screen), c.ao.samples);
+    if (c.ao.method != AoMethod::baked) return ambient_occlusion(*s.g, *s.screen, c.ao);
+    return draw_baked(*s.models, *s.camera, *s.shadow, *s.map, s.bakes.at(c.ao.samples),
+                      s.g->width(), s.g->height());
+}
+
+std::string method_name(const Case& c) {
+    return c.tinyrenderer ? "tinyrenderer" : name(c.ao.method);
+}
+
+std::string label(const Case& c) {
+    const AoOptions& o = c.ao;
+    return method_name(c) + ", " + std::to_string(o.samples) + " samples" +
            (o.blur > 0 ? ", blur " + std::to_string(o.blur) : ", no blur") +
            (o.rotate ? "" : ", no rotation");
 }
@@ -68,7 +78,7 @@ void time_gbuffer(benchmark::State& state, const Setup* s) {
 
 void time_ao(benchmark::State& state, const Setup* s, const Case* c) {
     for (auto _ : state) {
-        const rl::FloatImage ao = occlusion_of(*s, c->ao);
+        const rl::FloatImage ao = occlusion_of(*s, *c);
         benchmark::DoNotOptimize(ao.get(0, 0));
     }
 }
@@ -129,8 +139,13 @@ int main(int argc, char** argv) {
             o.rotate = false;
             cases.push_back({"methods", o});
         }
+        {
+            AoOptions o = base;
+            o.samples = kTinyrendererSamples, o.blur = 0;  // fresh points at every pixel
+            cases.push_back({"methods", o, true});
+        }
         const auto bench_name = [](const Case& c) {
-            return "ao/" + c.group + "/" + label(c.ao) + "/r" + std::to_string(c.ao.radius);
+            return "ao/" + c.group + "/" + label(c) + "/r" + std::to_string(c.ao.radius);
         };
         benchmark::RegisterBenchmark("gbuffer", time_gbuffer, &setup)
             ->Unit(benchmark::kMillisecond);
@@ -156,11 +171,11 @@ int main(int argc, char** argv) {
         rl::ResultsTable methods(columns), radius(columns);
         for (std::size_t i = 0; i < cases.size(); ++i) {
             const Case& c = cases[i];
-            const rl::FloatImage ao = occlusion_of(setup, c.ao);
+            const rl::FloatImage ao = occlusion_of(setup, c);
             const AoError e = compare(truth_for(c.ao.radius), ao, g, screen, c.ao.radius);
             const rl::lab::Timing& t = timings.at(bench_name(c));
             (i < method_cases || c.group == "methods" ? methods : radius)
-                .add_row({std::string(name(c.ao.method)), static_cast<long long>(c.ao.samples),
+                .add_row({method_name(c), static_cast<long long>(c.ao.samples),
                           static_cast<long long>(c.ao.blur),
                           std::string(c.ao.rotate ? "yes" : "no"), static_cast<double>(c.ao.radius),
                           t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6, e.mean, e.p95,

@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "10_ambient_occlusion/lab/ao_truth.hpp"
+#include "10_ambient_occlusion/lab/tinyrenderer_ssao.hpp"
 #include "rasterlab/transform.hpp"
 
 namespace {
@@ -142,6 +143,38 @@ TEST(Occlusion, ALoneFloorIsOpen) {
             EXPECT_GE(lowest, 0.99) << name(m);
         }
     }
+}
+
+// The lab's port of tinyrenderer's SSAO, on the same lone floor: its box
+// has no normal, so half of it lies under the floor and is hidden, and its
+// darkening maps that half to smoothstep(1 - 0.4 / 2) = 0.896, not to 1.
+// The page's anchor relies on the port doing what tinyrenderer does; the
+// same seed gives the same picture, and where no model is it is open.
+TEST(TinyrendererPort, ALoneFloorReadsNineTenths) {
+    const std::vector<MappedModel> scene = {floor_of(4)};
+    const Rendered r = gbuffer_of(scene, camera_at({0.3f, 1.5f, 3.5f}, {0, 0, 0}), 96);
+    const Surfaces surfaces(r.g, r.screen);
+    const rl::FloatImage ao = tinyrenderer_ssao(surfaces);
+    double sum = 0;
+    int pixels = 0;
+    for (int y = 16; y < 56; ++y)  // the floor's near middle: the box stays on it
+        for (int x = 24; x < 72; ++x) {
+            ASSERT_TRUE(r.screen.position(r.g, x, y));
+            sum += ao.get(x, y);
+            ++pixels;
+        }
+    const float half = 1 - 0.4f * 0.5f;
+    EXPECT_NEAR(sum / pixels, half * half * (3 - 2 * half), 0.02);
+    const rl::FloatImage again = tinyrenderer_ssao(surfaces);
+    int sky = 0;
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 96; ++x) {
+            ASSERT_EQ(ao.get(x, y), again.get(x, y));
+            if (r.screen.position(r.g, x, y)) continue;
+            EXPECT_EQ(ao.get(x, y), 1.0f);
+            ++sky;
+        }
+    EXPECT_GT(sky, 1000);
 }
 
 // The worked example: a floor point 0.25 from a wall, radius 0.5, is open
