@@ -46,6 +46,11 @@ int main(int argc, char** argv) {
         app, "--show", show, occlusion::kShows,
         "Write the picture, the occlusion alone, the picture without it, or one of the "
         "G-buffer's images");
+    std::string environment_source;
+    app.add_option("--environment", environment_source,
+                   "Light by lesson 09's environment instead of lesson 08's lights: sky, studio, "
+                   "white, or the path of a lat-long .hdr file (its diffuse light is what the "
+                   "occlusion darkens)");
     rl::add_method_option(app, "--normal-map", options.shadow.render.normal_map,
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
@@ -66,9 +71,23 @@ int main(int argc, char** argv) {
         rl::print_warnings("10_ambient_occlusion", warnings);
         if (options.shadow.render.filter == textures::Filter::trilinear)
             normal_mapping::build_mip_levels(models);
-        // The bake belongs to loading, not to the frame: timed apart.
+        // The environment and the bake belong to loading, not to the
+        // frame: timed apart.
         using Clock = std::chrono::steady_clock;
         const auto load = Clock::now();
+        std::optional<environment::Environment> sky;
+        std::optional<environment::DiffuseLight> diffuse;
+        occlusion::EnvironmentLight environment_light;
+        if (!environment_source.empty()) {
+            std::vector<std::string> map_warnings;  // texels a broken .hdr had to lose
+            sky = environment::make_environment({.source = environment_source}, map_warnings);
+            rl::print_warnings("10_ambient_occlusion", map_warnings);
+            diffuse.emplace([&](rl::vec3 d) { return sky->sample(d); },
+                            environment::Irradiance::convolved);
+            environment_light.sky = &*sky, environment_light.diffuse = &*diffuse;
+            options.environment = &environment_light;
+        }
+        const auto lit = Clock::now();
         std::optional<occlusion::BakedAo> baked;
         if (options.ao.method == occlusion::AoMethod::baked)
             baked = occlusion::bake_vertex_ao(models, occlusion::RayTracedAo(models),
@@ -79,7 +98,11 @@ int main(int argc, char** argv) {
         const auto done = Clock::now();
         const occlusion::Screen screen(camera, width, height);
         rl::save_image(output, occlusion::picture(frame, options, show, &screen));
-        const std::chrono::duration<double, std::milli> ms = done - start, bake = start - load;
+        const std::chrono::duration<double, std::milli> ms = done - start, bake = start - lit,
+                                                        light = lit - load;
+        if (sky)
+            std::printf("%s environment and its diffuse light built in %.1f ms\n",
+                        environment_source.c_str(), light.count());
         if (baked)
             std::printf("baked %d rays a vertex in %.1f ms\n", options.ao.samples, bake.count());
         std::printf(

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -42,7 +43,19 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
     return {std::move(g), std::move(ao), counts};
 }
 
+rl::vec3 light_at(const Frame& f, const SceneOptions& options, int x, int y, float open) {
+    const rl::vec3 albedo = f.g.colour<kAlbedo>().get(x, y);
+    if (const EnvironmentLight* e = options.environment)
+        return albedo * e->diffuse->at(f.g.colour<kNormal>().get(x, y)) *
+               (open / std::numbers::pi_v<float>);
+    return f.g.colour<kDirect>().get(x, y) + options.ambient * albedo * open;
+}
+
 rl::Image picture(const Frame& f, const SceneOptions& options, Show show, const Screen* screen) {
+    const EnvironmentLight* environment = options.environment;
+    const bool lit = show == Show::image || show == Show::unoccluded;
+    if (environment && lit && !screen)
+        throw std::invalid_argument("the environment behind the models needs the frame's screen");
     rl::Image out(f.g.width(), f.g.height(), rl::kBackground);
     const float clear = f.g.depth_state.clear;
     // The depth image's range: the nearest and farthest view depths seen.
@@ -58,7 +71,16 @@ rl::Image picture(const Frame& f, const SceneOptions& options, Show show, const 
     for (int y = 0; y < f.g.height(); ++y)
         for (int x = 0; x < f.g.width(); ++x) {
             const float z = f.g.depth()->get(x, y);
-            if (!(z < clear)) continue;
+            if (!(z < clear)) {
+                if (environment && lit)
+                    out.set(x, y,
+                            shading::encode(
+                                environment::tone_map(
+                                    environment->sky->sample(screen->ray(x + 0.5f, y + 0.5f)),
+                                    environment->exposure),
+                                shading::Output::srgb));
+                continue;
+            }
             const float ao = f.ao.get(x, y);
             rl::vec3 grey{ao, ao, ao};
             switch (show) {
@@ -86,10 +108,13 @@ rl::Image picture(const Frame& f, const SceneOptions& options, Show show, const 
                 }
                 case Show::image:
                 case Show::unoccluded: {
-                    const float open = show == Show::unoccluded ? 1.0f : ao;
-                    const rl::vec3 light = f.g.colour<kDirect>().get(x, y) +
-                                           options.ambient * f.g.colour<kAlbedo>().get(x, y) * open;
-                    out.set(x, y, shading::encode(light, shading::Output::srgb));
+                    const rl::vec3 light =
+                        light_at(f, options, x, y, show == Show::unoccluded ? 1.0f : ao);
+                    out.set(x, y,
+                            shading::encode(
+                                environment ? environment::tone_map(light, environment->exposure)
+                                            : light,
+                                shading::Output::srgb));
                     continue;
                 }
             }

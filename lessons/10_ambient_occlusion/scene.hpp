@@ -1,13 +1,18 @@
 // Lesson 10's render: lesson 08's scene and direct light into a G-buffer,
 // the ambient occlusion from it, then the picture: the direct light plus
 // the ambient light, which alone the occlusion darkens (the direct light
-// has its shadow map for that).
+// has its shadow map for that). Or, given an environment (lesson 09), its
+// diffuse light alone, darkened by the occlusion, with the environment
+// behind the models, tone mapped.
 //
 //   occlusion::SceneOptions options;  // lesson 08's lights, the AO's defaults
 //   const occlusion::Frame f = occlusion::render(models, camera, options, 800, 800);
 //   rl::save_image("10.tga", occlusion::picture(f, options));
 #pragma once
 
+#include "09_environment/environment.hpp"
+#include "09_environment/irradiance.hpp"
+#include "09_environment/tone_map.hpp"
 #include "ambient_occlusion.hpp"
 #include "baked_ao.hpp"
 
@@ -35,10 +40,22 @@ inline const char* name(Show value) {
     return rl::name_in(kShowNames, value);
 }
 
+// Light from an environment (lesson 09) in place of lesson 08's lights:
+// each point's diffuse light, albedo / pi x the irradiance E(n), is what the
+// occlusion darkens. The key light is left out, since the environment's
+// sun (if it has one) is that light already; no shadow map stops it, so the
+// occlusion is the only shadow the sun gets here.
+struct EnvironmentLight {
+    const environment::Environment* sky = nullptr;       // behind the models
+    const environment::DiffuseLight* diffuse = nullptr;  // E(n)
+    environment::Exposure exposure;                      // lesson 09's defaults
+};
+
 struct SceneOptions {
     shadows::ShadowOptions shadow;  // lesson 08's: lights, shadow map, normal maps
     AoOptions ao;
     rl::vec3 ambient = kAmbient;
+    const EnvironmentLight* environment = nullptr;  // none: lesson 08's lights and kAmbient
 };
 
 struct Frame {
@@ -63,10 +80,16 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
              const BakedAo* baked = nullptr);
 
 // [doc:compose]
-// The picture's light at each pixel: direct + ambient x albedo x occlusion,
-// encoded to sRGB (lesson 06); the background where no model is.
+// The light at pixel (x, y) of a model, linear, with `open` its occlusion:
+// direct + ambient x albedo x open, or, with an environment,
+// albedo / pi x E(n) x open.
+rl::vec3 light_at(const Frame& f, const SceneOptions& options, int x, int y, float open);
+
+// The picture: each pixel's light encoded to sRGB (lesson 06), or with an
+// environment exposed and tone mapped (lesson 09) with the environment
+// where no model is; without one the background.
 rl::Image picture(const Frame& f, const SceneOptions& options, Show show = Show::image,
-                  const Screen* screen = nullptr);  // for Show::depth
+                  const Screen* screen = nullptr);  // for Show::depth and an environment
 // [/doc:compose]
 
 using shadows::load_scene;  // lesson 08's scene and camera

@@ -145,6 +145,42 @@ TEST(Occlusion, ALoneFloorIsOpen) {
     }
 }
 
+// With lesson 09's white furnace (radiance 1 from everywhere), E(n) = pi
+// for every normal, so a point's light is its albedo times its occlusion,
+// whatever the normal: the occlusion darkens the environment's diffuse
+// light and nothing else (lesson 08's key light is left out).
+TEST(EnvironmentLight, AWhiteSkyGivesAlbedoTimesTheOcclusion) {
+    std::vector<std::string> warnings;
+    const environment::Environment white =
+        environment::make_environment({.source = "white", .size = 32}, warnings);
+    const environment::DiffuseLight diffuse([&](rl::vec3 d) { return white.sample(d); },
+                                            environment::Irradiance::convolved);
+    const EnvironmentLight light{&white, &diffuse, {}};
+    SceneOptions options;
+    options.environment = &light;
+    const std::vector<MappedModel> scene = {
+        floor_of(2), model("globe", {.translation = {0, 0.5f, 0}, .scale = {0.5f, 0.5f, 0.5f}})};
+    const perspective::Camera camera = camera_at({0.3f, 1.5f, 3}, {0, 0.3f, 0});
+    const Frame f = render(scene, camera, options, 48, 48);
+    int pixels = 0;
+    for (int y = 0; y < 48; ++y)
+        for (int x = 0; x < 48; ++x) {
+            if (!(f.g.depth()->get(x, y) < f.g.depth_state.clear)) continue;
+            const rl::vec3 albedo = f.g.colour<kAlbedo>().get(x, y);
+            for (float open : {1.0f, 0.25f}) {
+                const rl::vec3 l = light_at(f, options, x, y, open);
+                ASSERT_NEAR(l.x, albedo.x * open, 0.01f * albedo.x + 1e-6f) << x << "," << y;
+                ASSERT_NEAR(l.z, albedo.z * open, 0.01f * albedo.z + 1e-6f) << x << "," << y;
+            }
+            ++pixels;
+        }
+    EXPECT_GT(pixels, 400);
+    // The environment behind the models needs the rays of the frame's screen.
+    EXPECT_THROW(picture(f, options), std::invalid_argument);
+    const Screen screen(camera, 48, 48);
+    EXPECT_NO_THROW(picture(f, options, Show::image, &screen));
+}
+
 // The lab's port of tinyrenderer's SSAO, on the same lone floor: its box
 // has no normal, so half of it lies under the floor and is hidden, and its
 // darkening maps that half to smoothstep(1 - 0.4 / 2) = 0.896, not to 1.
