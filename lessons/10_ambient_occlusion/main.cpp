@@ -75,17 +75,12 @@ int main(int argc, char** argv) {
         // frame: timed apart.
         using Clock = std::chrono::steady_clock;
         const auto load = Clock::now();
-        std::optional<environment::Environment> sky;
-        std::optional<environment::DiffuseLight> diffuse;
-        occlusion::EnvironmentLight environment_light;
+        std::optional<occlusion::EnvironmentLighting> lighting;
         if (!environment_source.empty()) {
             std::vector<std::string> map_warnings;  // texels a broken .hdr had to lose
-            sky = environment::make_environment({.source = environment_source}, map_warnings);
+            lighting.emplace(environment_source, map_warnings);
             rl::print_warnings("10_ambient_occlusion", map_warnings);
-            diffuse.emplace([&](rl::vec3 d) { return sky->sample(d); },
-                            environment::Irradiance::convolved);
-            environment_light.sky = &*sky, environment_light.diffuse = &*diffuse;
-            options.environment = &environment_light;
+            options.environment = &lighting->light();
         }
         const auto lit = Clock::now();
         std::optional<occlusion::BakedAo> baked;
@@ -100,7 +95,7 @@ int main(int argc, char** argv) {
         rl::save_image(output, occlusion::picture(frame, options, show, &screen));
         const std::chrono::duration<double, std::milli> ms = done - start, bake = start - lit,
                                                         light = lit - load;
-        if (sky)
+        if (lighting)
             std::printf("%s environment and its diffuse light built in %.1f ms\n",
                         environment_source.c_str(), light.count());
         if (baked)

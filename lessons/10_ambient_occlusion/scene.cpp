@@ -43,6 +43,13 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
     return {std::move(g), std::move(ao), counts};
 }
 
+EnvironmentLighting::EnvironmentLighting(const std::string& source,
+                                         std::vector<std::string>& warnings)
+    : sky_(environment::make_environment({.source = source}, warnings)),
+      diffuse_([this](rl::vec3 d) { return sky_.sample(d); }, environment::Irradiance::convolved),
+      light_{&sky_, &diffuse_, {}} {}
+
+// [doc:environment-light]
 rl::vec3 light_at(const Frame& f, const SceneOptions& options, int x, int y, float open) {
     const rl::vec3 albedo = f.g.colour<kAlbedo>().get(x, y);
     if (const EnvironmentLight* e = options.environment)
@@ -50,6 +57,7 @@ rl::vec3 light_at(const Frame& f, const SceneOptions& options, int x, int y, flo
                (open / std::numbers::pi_v<float>);
     return f.g.colour<kDirect>().get(x, y) + options.ambient * albedo * open;
 }
+// [/doc:environment-light]
 
 rl::Image picture(const Frame& f, const SceneOptions& options, Show show, const Screen* screen) {
     const EnvironmentLight* environment = options.environment;

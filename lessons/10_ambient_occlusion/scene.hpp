@@ -51,6 +51,25 @@ struct EnvironmentLight {
     environment::Exposure exposure;                      // lesson 09's defaults
 };
 
+// An environment and its diffuse light, built once from `source` (sky,
+// studio, white or a lat-long .hdr path, as lesson 09 takes them): the map
+// at lesson 09's default size and its convolved irradiance. Not movable:
+// the diffuse light reads the map it holds.
+class EnvironmentLighting {
+  public:
+    // Throws what lesson 09's make_environment throws; texels a broken file
+    // had to lose are counted in `warnings`.
+    EnvironmentLighting(const std::string& source, std::vector<std::string>& warnings);
+    EnvironmentLighting(const EnvironmentLighting&) = delete;
+    EnvironmentLighting& operator=(const EnvironmentLighting&) = delete;
+    const EnvironmentLight& light() const { return light_; }
+
+  private:
+    environment::Environment sky_;
+    environment::DiffuseLight diffuse_;
+    EnvironmentLight light_;
+};
+
 struct SceneOptions {
     shadows::ShadowOptions shadow;  // lesson 08's: lights, shadow map, normal maps
     AoOptions ao;

@@ -18,7 +18,8 @@ void bind_lesson10(py::module_ m) {
         "render",
         [](py::object models, std::optional<Camera> camera, const Numbers<"light">& light,
            Int<"width"> width, Int<"height"> height, const std::string& ao, Int<"samples"> samples,
-           Real<"radius"> radius, Int<"blur"> blur, bool rotation, const std::string& show,
+           Real<"radius"> radius, Int<"blur"> blur, bool rotation,
+           std::optional<py::object> environment, const std::string& show,
            const std::string& normal_map, const std::string& tangents) {
             check_size(width, height);
             occlusion::check_frame_size(width, height);
@@ -35,8 +36,15 @@ void bind_lesson10(py::module_ m) {
                 choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);
             const perspective::ViewOptions view = view_options(models, camera, light);
+            const std::optional<std::string> source =
+                environment ? std::optional(model_path(*environment, "environment")) : std::nullopt;
             Result r;
             py::gil_scoped_release unlocked;
+            std::optional<occlusion::EnvironmentLighting> lighting;
+            if (source) {
+                lighting.emplace(*source, r.warnings);
+                options.environment = &lighting->light();
+            }
             shadows::set_lights(options.shadow, view, false);
             const auto scene = occlusion::load_scene(view, frames, width, height, r.warnings);
             if (options.shadow.render.filter == textures::Filter::trilinear)
@@ -63,13 +71,14 @@ void bind_lesson10(py::module_ m) {
         py::arg("width") = 800, py::arg("height") = 800,
         py::arg("ao") = occlusion::name(defaults.method), py::arg("samples") = defaults.samples,
         py::arg("radius") = defaults.radius, py::arg("blur") = defaults.blur,
-        py::arg("rotation") = true, py::arg("show") = "image", py::arg("normal_map") = "tangent",
-        py::arg("tangents") = "split",
+        py::arg("rotation") = true, py::arg("environment") = py::none(), py::arg("show") = "image",
+        py::arg("normal_map") = "tangent", py::arg("tangents") = "split",
         "10_ambient_occlusion: the floor, globe, crate and torus (or the models given, as "
         "stored) into a G-buffer, lesson 08's direct light plus an ambient light darkened by "
         "ambient occlusion (ao='none', 'crytek', 'hemisphere', 'horizon' or 'baked'); "
         "show='ao' gives the occlusion alone, 'direct', 'albedo', 'normal' or 'depth' a "
-        "G-buffer image");
+        "G-buffer image; environment='sky', 'studio', 'white' or an .hdr path lights it by "
+        "lesson 09's environment instead, whose diffuse light the occlusion darkens");
 }
 
 }  // namespace py_rl

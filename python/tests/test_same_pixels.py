@@ -224,6 +224,11 @@ def test_lesson10_gbuffer_depth(programs):
          programs.image("10", "--show", "depth", "--normal-map", "none", *SIZE))
 
 
+def test_lesson10_environment(programs):
+    same(rasterlab.lesson10.render(environment="studio", **SMALL),
+         programs.image("10", "--environment", "studio", *SIZE))
+
+
 @pytest.mark.parametrize("threads", [1, 2])
 def test_lesson12(programs, threads):
     same(rasterlab.lesson12.render(frames=3, threads=threads, tile_size=32, **SMALL),

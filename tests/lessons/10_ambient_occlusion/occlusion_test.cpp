@@ -151,13 +151,9 @@ TEST(Occlusion, ALoneFloorIsOpen) {
 // light and nothing else (lesson 08's key light is left out).
 TEST(EnvironmentLight, AWhiteSkyGivesAlbedoTimesTheOcclusion) {
     std::vector<std::string> warnings;
-    const environment::Environment white =
-        environment::make_environment({.source = "white", .size = 32}, warnings);
-    const environment::DiffuseLight diffuse([&](rl::vec3 d) { return white.sample(d); },
-                                            environment::Irradiance::convolved);
-    const EnvironmentLight light{&white, &diffuse, {}};
+    const EnvironmentLighting white("white", warnings);
     SceneOptions options;
-    options.environment = &light;
+    options.environment = &white.light();
     const std::vector<MappedModel> scene = {
         floor_of(2), model("globe", {.translation = {0, 0.5f, 0}, .scale = {0.5f, 0.5f, 0.5f}})};
     const perspective::Camera camera = camera_at({0.3f, 1.5f, 3}, {0, 0.3f, 0});
