@@ -302,6 +302,35 @@ TEST(Occlusion, ExtremeRadiiAndViewsGiveSharesInZeroToOne) {
     EXPECT_EQ(lone.at({0.3, 0, -0.2}, {0, 1, 0}, 10, 256, 3), 1.0);
 }
 
+// A wall seen exactly edge-on covers at most a pixel's column of the depth
+// buffer (its plane holds the eye): every method still gives shares in
+// [0, 1] and no NaN beside it, and the floor far from it stays open.
+TEST(Occlusion, AWallSeenEdgeOnGivesSharesInZeroToOne) {
+    const std::vector<MappedModel> scene = {floor_of(2), wall_at(0.25f, 0.5f)};
+    const Rendered r = gbuffer_of(scene, camera_at({0.25f, 0.5f, 3}, {0.25f, 0.3f, 0}), 64);
+    for (AoMethod m : kScreenSpaceAoMethods) {
+        AoOptions o;
+        o.method = m, o.samples = 16;
+        const rl::FloatImage ao = ambient_occlusion(r.g, r.screen, o);
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x) {
+                const float a = ao.get(x, y);
+                ASSERT_TRUE(a >= 0 && a <= 1) << name(m) << " at " << x << "," << y << ": " << a;
+            }
+        if (m == AoMethod::crytek) continue;
+        // Floor pixels a metre or more from the wall's plane, on either side, are open.
+        int far = 0;
+        for (int y = 0; y < 64; ++y)
+            for (int x = 0; x < 64; ++x)
+                if (const std::optional<rl::vec3> p = r.screen.position(r.g, x, y))
+                    if (std::fabs(p->x - 0.25f) > 1 && p->y < 1e-3f) {
+                        EXPECT_GE(ao.get(x, y), 0.95f) << name(m) << " at " << x << "," << y;
+                        ++far;
+                    }
+        EXPECT_GT(far, 100) << name(m);
+    }
+}
+
 TEST(Occlusion, RefusesOptionsOutsideTheirRanges) {
     for (AoOptions o :
          {AoOptions{.samples = 0}, AoOptions{.samples = kMaxAoSamples + 1}, AoOptions{.radius = 0},
