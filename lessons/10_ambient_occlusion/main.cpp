@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(CLI::Range(1, occlusion::kMaxAoSamples));
     app.add_option("--radius", options.ao.radius,
-                   "How far an occluder may be, in world units (the floor is 8 wide)")
+                   "How far an occluder may be, in world units (the floor is 3.4 wide)")
         ->capture_default_str()
         ->check(rl::finite_number(1e-4, 1e4));
     app.add_option("--blur", options.ao.blur,
@@ -83,30 +83,44 @@ int main(int argc, char** argv) {
             options.environment = &lighting->light();
         }
         const auto lit = Clock::now();
+        // Embree's scene is built first, timed apart from the rays it casts.
+        std::optional<occlusion::RayTracedAo> rays;
         std::optional<occlusion::BakedAo> baked;
-        if (options.ao.method == occlusion::AoMethod::baked)
-            baked = occlusion::bake_vertex_ao(models, occlusion::RayTracedAo(models),
-                                              options.ao.radius, options.ao.samples);
+        if (options.ao.method == occlusion::AoMethod::baked) rays.emplace(models);
+        const auto scene_built = Clock::now();
+        if (rays)
+            baked = occlusion::bake_vertex_ao(models, *rays, options.ao.radius, options.ao.samples);
         const auto start = Clock::now();
         const occlusion::Frame frame =
             occlusion::render(models, camera, options, width, height, baked ? &*baked : nullptr);
         const auto done = Clock::now();
         const occlusion::Screen screen(camera, width, height);
         rl::save_image(output, occlusion::picture(frame, options, show, &screen));
-        const std::chrono::duration<double, std::milli> ms = done - start, bake = start - lit,
+        const std::chrono::duration<double, std::milli> ms = done - start,
+                                                        bake = start - scene_built,
+                                                        embree = scene_built - lit,
                                                         light = lit - load;
         if (lighting)
             std::printf("%s environment and its diffuse light built in %.1f ms\n",
                         environment_source.c_str(), light.count());
         if (baked)
-            std::printf("baked %d rays a vertex in %.1f ms\n", options.ao.samples, bake.count());
+            std::printf("Embree's scene built in %.1f ms; baked %d rays a vertex in %.1f ms\n",
+                        embree.count(), options.ao.samples, bake.count());
+        // What the method used: no samples for none, rays a vertex and no blur for baked.
+        char settings[96] = "";
+        const double radius = options.ao.radius;
+        if (options.ao.method == occlusion::AoMethod::baked)
+            std::snprintf(settings, sizeof settings, " (%d rays a vertex, radius %g)",
+                          options.ao.samples, radius);
+        else if (options.ao.method != occlusion::AoMethod::none)
+            std::snprintf(settings, sizeof settings, " (%d samples, radius %g, blur %d)",
+                          options.ao.samples, radius, options.ao.blur);
         std::printf(
-            "%zu models: %zu faces, %zu fragments shaded; %s occlusion (%d samples, radius %g, "
-            "blur %d) in a frame of %.1f ms; %s into %s\n",
+            "%zu models: %zu faces, %zu fragments shaded; %s occlusion%s in a frame of %.1f ms; "
+            "%s into %s\n",
             models.size(), frame.counts.faces, frame.counts.fragments,
-            occlusion::name(options.ao.method), options.ao.samples,
-            static_cast<double>(options.ao.radius), options.ao.blur, ms.count(),
-            occlusion::name(show), output.c_str());
+            occlusion::name(options.ao.method), settings, ms.count(), occlusion::name(show),
+            output.c_str());
         return 0;
     });
 }
