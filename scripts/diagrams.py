@@ -1291,6 +1291,46 @@ def split_sum(out):
     save(figure, out, "09_split_sum.svg")
 
 
+def gbuffer_passes(out):
+    # Lesson 10's frame as data flow: the triangles are drawn once into four
+    # images (the G-buffer); the occlusion pass reads only depth and normal,
+    # the blur reads the occlusion and the same two, and the picture reads
+    # direct light, albedo and the blurred occlusion. Each image's bytes a
+    # pixel under its name (float colours: 12, depth: 4).
+    figure, axes = plt.subplots(figsize=(7.4, 3.3))
+    width, height = 1.7, 0.62
+    def box(x, y, text, colour=SOFT, note=""):
+        axes.add_patch(Rectangle((x, y), width, height, fc=colour, ec=INK, lw=0.8))
+        axes.text(x + width / 2, y + height / 2, text, ha="center", va="center", fontsize=9)
+        if note:
+            axes.text(x + width / 2, y - 0.08, note, ha="center", va="top", fontsize=7.5, color=LINE)
+    def arrow(start, end, colour=INK):
+        axes.annotate("", xy=end, xytext=start, arrowprops=dict(arrowstyle="->", color=colour, lw=0.9))
+    box(0.0, 1.5, "triangles\n+ shadow map", SOFT, "lesson 08's models and light")
+    images = [("direct light", 3.0, "12 bytes"), ("albedo", 2.15, "12 bytes"),
+              ("normal", 1.3, "12 bytes"), ("depth", 0.45, "4 bytes")]
+    for name, y, size in images:
+        box(2.6, y, name, "#fff4c8", size)
+        arrow((1.7, 1.81), (2.6, y + height / 2))
+    axes.text(3.45, 3.85, "the G-buffer: one pass, four images", ha="center", fontsize=9, color=ACCENT)
+    box(5.0, 0.85, "occlusion\n(a method)", SOFT, "depth + normal only")
+    arrow((4.3, 1.3 + height / 2), (5.0, 0.85 + height * 0.65))
+    arrow((4.3, 0.45 + height / 2), (5.0, 0.85 + height * 0.35))
+    box(7.3, 0.85, "blur within\none surface", SOFT, "occlusion, depth, normal")
+    arrow((6.7, 0.85 + height / 2), (7.3, 0.85 + height / 2))
+    box(7.3, 2.6, "picture", "#f8dcd4", "")
+    axes.text(7.3 + width / 2, 2.6 + height + 0.08, "direct + ambient x albedo x A", ha="center",
+              va="bottom", fontsize=7.5, color=LINE)
+    arrow((8.15, 0.85 + height), (8.15, 2.6))
+    arrow((4.3, 3.0 + height / 2), (7.3, 2.6 + height * 0.75))
+    arrow((4.3, 2.15 + height / 2), (7.3, 2.6 + height * 0.3))
+    axes.set_xlim(-0.1, 9.1)
+    axes.set_ylim(0.2, 4.0)
+    axes.axis("off")
+    axes.set_title("Lesson 10's frame: the scene drawn once, then passes over images", fontsize=10)
+    save(figure, out, "10_gbuffer.svg")
+
+
 def ao_kernel_panel(axes, title, half):
     """A floor point p beside a box, seen from the side; the eye up and to the left."""
     axes.add_patch(Rectangle((-1.6, -0.3), 3.4, 0.3, color=SOFT))
@@ -1391,7 +1431,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon):
+                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes):
         draw(out)
 
 
