@@ -35,11 +35,11 @@
 namespace perspective {
 
 inline bool valid_sample_count(int samples) {
-    return samples == 1 || samples == 2 || samples == 4 || samples == 8;
+    return samples == 1 || samples == 2 || samples == 4 || samples == 8 || samples == 16;
 }
 
 struct TargetOptions {
-    int samples = 1;  // per pixel: 1, 2, 4 or 8
+    int samples = 1;  // per pixel: 1, 2, 4, 8 or 16
     bool has_depth = true;
     zbuffer::DepthState depth;
 };
@@ -54,7 +54,7 @@ class RenderTarget {
                           Pixels... clear_values)
         : depth_state(options.depth), width_(width), height_(height), samples_(options.samples) {
         if (!valid_sample_count(samples_))
-            throw std::invalid_argument("samples per pixel must be 1, 2, 4 or 8, not " +
+            throw std::invalid_argument("samples per pixel must be 1, 2, 4, 8 or 16, not " +
                                         std::to_string(samples_));
         colour_ = {rl::Grid<Pixels>(width * samples_, height, clear_values)...};
         if (options.has_depth)

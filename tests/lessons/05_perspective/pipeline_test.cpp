@@ -384,9 +384,11 @@ TEST(CoverageSeam, OneSamplePerPixelRefusesATargetOfSeveralSamples) {
     EXPECT_THROW(draw(covering_triangle(), Constant{{1, 2, 3, 255}}, four), std::invalid_argument);
 }
 
-TEST(Pipeline, SampleCountsOtherThanOneTwoFourEightAreRefused) {
+TEST(Pipeline, SampleCountsOtherThanPowersOfTwoUpToSixteenAreRefused) {
     EXPECT_THROW(ColourTarget(4, 4, with_samples(3), rl::kBackground), std::invalid_argument);
+    EXPECT_THROW(ColourTarget(4, 4, with_samples(32), rl::kBackground), std::invalid_argument);
     EXPECT_NO_THROW(ColourTarget(4, 4, with_samples(8), rl::kBackground));
+    EXPECT_NO_THROW(ColourTarget(4, 4, with_samples(16), rl::kBackground));
 }
 
 TEST(Pipeline, TileByTileEqualsOneDraw) {

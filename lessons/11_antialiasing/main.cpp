@@ -1,0 +1,81 @@
+// Lesson 11: antialiasing. Lesson 08's scene with several samples a pixel:
+// supersampling (every sample shaded) or multisampling (coverage and depth
+// per sample, one shading a pixel), in a pattern of samples, resolved in
+// linear light by a box or a tent. Read docs/11_antialiasing.md beside it.
+#include <chrono>
+#include <cstdio>
+
+#include "05_perspective/view_cli.hpp"
+#include "rasterlab/image_io.hpp"
+#include "rasterlab/main_guard.hpp"
+#include "scene.hpp"
+
+int main(int argc, char** argv) {
+    CLI::App app{
+        "Lesson 11, antialiasing: lesson 08's scene with several samples a pixel, supersampled or "
+        "multisampled, resolved in linear light."};
+    rl::ImageOptions image_options{"11_antialiasing.tga"};
+    perspective::ViewOptions view;
+    shadows::ShadowOptions shadow;
+    antialiasing::AaOptions options;
+    normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
+    view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
+    perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
+    rl::add_image_options(app, image_options);
+    rl::add_method_option(app, "--aa", options.method, antialiasing::kMethods,
+                          "How a pixel is sampled: once, supersampled or multisampled");
+    CLI::Option* samples =
+        app.add_option("--samples", options.samples,
+                       "Samples a pixel for ssaa and msaa: 2, 4, 8 or 16 (as the pattern has them)")
+            ->capture_default_str()
+            ->check(CLI::IsMember({1, 2, 4, 8, 16}));
+    rl::add_method_option(app, "--pattern", options.pattern, antialiasing::kPatterns,
+                          "Where a pixel's samples lie: an ordered grid (4, 16), a rotated grid "
+                          "(4) or Direct3D's standard patterns (2, 4, 8, 16)");
+    rl::add_method_option(app, "--resolve", options.resolve, antialiasing::kResolves,
+                          "How samples become a pixel: their mean (box), or a tent over the "
+                          "pixel and its neighbours");
+    CLI::Option* shade_at =
+        rl::add_method_option(app, "--shade-at", options.shade_at, antialiasing::kShadeAts,
+                              "msaa: where the fragment stage runs in a pixel");
+    rl::add_method_option(app, "--normal-map", shadow.render.normal_map,
+                          normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
+    rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
+                          "Tangent frames of the --model files (lesson 07)");
+    CLI11_PARSE(app, argc, argv);
+    const std::string& output = image_options.output;
+    const int width = image_options.width, height = image_options.height;
+
+    return rl::guarded_main("11_antialiasing", [&] {
+        rl::check_image_output(output);
+        // Options the method would ignore are refused, not ignored.
+        if (options.method == antialiasing::Method::none && samples->count() > 0 &&
+            options.samples != 1)
+            throw std::invalid_argument("--samples: --aa none takes one sample a pixel");
+        if (options.method != antialiasing::Method::msaa && shade_at->count() > 0)
+            throw std::invalid_argument("--shade-at: only --aa msaa shades once a pixel");
+        antialiasing::check(options);
+        antialiasing::check_frame_size(width, height, antialiasing::samples_of(options));
+        shadows::set_lights(shadow, view, false);
+        std::vector<std::string> warnings;
+        const auto [models, camera] =
+            antialiasing::load_scene(view, tangents, width, height, warnings);
+        rl::print_warnings("11_antialiasing", warnings);
+        if (shadow.render.filter == textures::Filter::trilinear)
+            normal_mapping::build_mip_levels(models);
+        const auto start = std::chrono::steady_clock::now();
+        const antialiasing::Frame frame =
+            antialiasing::render(models, camera, shadow, options, width, height);
+        const std::chrono::duration<double, std::milli> ms =
+            std::chrono::steady_clock::now() - start;
+        rl::save_image(output, frame.picture);
+        std::printf(
+            "%zu models: %zu faces, %zu samples stored; %s, %d samples a pixel (%s pattern, %s "
+            "resolve) in a frame of %.1f ms; into %s\n",
+            models.size(), frame.counts.faces, frame.counts.fragments,
+            antialiasing::name(options.method), antialiasing::samples_of(options),
+            antialiasing::name(options.pattern), antialiasing::name(options.resolve), ms.count(),
+            output.c_str());
+        return 0;
+    });
+}

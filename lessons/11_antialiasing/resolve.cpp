@@ -1,0 +1,51 @@
+#include "resolve.hpp"
+
+#include <cmath>
+
+#include "05_perspective/render_target.hpp"
+
+namespace antialiasing {
+
+namespace {
+
+// [doc:tent]
+// The tent's weight of a sample at (dx, dy) pixels from a pixel's centre.
+double tent(double dx, double dy) {
+    return std::max(0.0, 1 - std::abs(dx)) * std::max(0.0, 1 - std::abs(dy));
+}
+
+rl::vec3 tent_at(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>& offsets, int x,
+                 int y) {
+    const int n = static_cast<int>(offsets.size());
+    const int width = samples.width() / n;
+    double sum[3] = {0, 0, 0}, weights = 0;
+    for (int j = y - 1; j <= y + 1; ++j)
+        for (int i = x - 1; i <= x + 1; ++i) {
+            if (i < 0 || j < 0 || i >= width || j >= samples.height()) continue;
+            for (int s = 0; s < n; ++s) {
+                const rl::vec2 o = offsets[static_cast<std::size_t>(s)];
+                const double w = tent(i - x + o.x, j - y + o.y);
+                if (w == 0) continue;
+                const rl::vec3 c = samples.get(i * n + s, j);
+                sum[0] += w * c.x, sum[1] += w * c.y, sum[2] += w * c.z;
+                weights += w;
+            }
+        }
+    return {static_cast<float>(sum[0] / weights), static_cast<float>(sum[1] / weights),
+            static_cast<float>(sum[2] / weights)};
+}
+// [/doc:tent]
+
+}  // namespace
+
+rl::Grid<rl::vec3> resolve(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>& offsets,
+                           Resolve filter) {
+    const int n = static_cast<int>(offsets.size());
+    if (filter == Resolve::box) return perspective::resolve(samples, n);
+    rl::Grid<rl::vec3> out(samples.width() / n, samples.height());
+    for (int y = 0; y < out.height(); ++y)
+        for (int x = 0; x < out.width(); ++x) out.at(x, y) = tent_at(samples, offsets, x, y);
+    return out;
+}
+
+}  // namespace antialiasing

@@ -1,0 +1,35 @@
+// From samples to pixels: each pixel of the picture a weighted mean of
+// samples of linear light (averaging sRGB bytes instead darkens every edge:
+// docs/11_antialiasing.md#the-resolve).
+//
+//   const rl::Grid<rl::vec3> light = antialiasing::resolve(frame.colour(), offsets, Resolve::box);
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "rasterlab/image.hpp"
+#include "rasterlab/named_enum.hpp"
+#include "rasterlab/vec.hpp"
+
+namespace antialiasing {
+
+// box: the mean of the pixel's own samples, each weighing the same (what
+// GPUs resolve by default; lesson 05's resolve()). tent: every sample
+// within one pixel of the pixel's centre, its own and its neighbours',
+// weighted by (1 - |dx|)(1 - |dy|): a filter twice as wide, which smooths
+// steps further and blurs a little.
+enum class Resolve { box, tent };
+inline constexpr std::array<rl::Named<Resolve>, 2> kResolveNames = {
+    {{Resolve::box, "box"}, {Resolve::tent, "tent"}}};
+inline constexpr std::array<Resolve, 2> kResolves = rl::values_of(kResolveNames);
+inline const char* name(Resolve value) {
+    return rl::name_in(kResolveNames, value);
+}
+
+// The picture from an attachment of offsets.size() samples a pixel, stored
+// side by side (sample s of pixel (x, y) at (x * samples + s, y)).
+rl::Grid<rl::vec3> resolve(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>& offsets,
+                           Resolve filter);
+
+}  // namespace antialiasing

@@ -1,0 +1,75 @@
+#include "scene.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "06_shading/colour.hpp"
+
+namespace antialiasing {
+
+int samples_of(const AaOptions& options) {
+    return options.method == Method::none ? 1 : options.samples;
+}
+
+void check(const AaOptions& options) {
+    if (options.method == Method::none) return;
+    if (!has_count(options.pattern, options.samples))
+        sample_offsets(options.pattern, options.samples);  // throws, naming the counts it has
+}
+
+void check_frame_size(int width, int height, int samples) {
+    const long long total = static_cast<long long>(width) * height * samples;
+    if (total > kMaxFrameSamples)
+        throw std::invalid_argument("a frame of " + std::to_string(width) + "x" +
+                                    std::to_string(height) + " at " + std::to_string(samples) +
+                                    " samples a pixel is past lesson 11's cap of 2^26 samples " +
+                                    "(16 bytes each: 1 GiB)");
+}
+
+Frame render(const std::vector<normal_mapping::MappedModel>& models,
+             const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+             const AaOptions& options, int width, int height) {
+    check(options);
+    const int n = samples_of(options);
+    check_frame_size(width, height, n);
+    const std::vector<rl::vec2> offsets = options.method == Method::none
+                                              ? std::vector<rl::vec2>{{0, 0}}
+                                              : sample_offsets(options.pattern, options.samples);
+    const float aspect = static_cast<float>(width) / static_cast<float>(height);
+    const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, shadow);
+    // The background in linear light, so that edges blend with it as light.
+    const auto linear = [](std::uint8_t byte) {
+        return shading::srgb_to_linear(static_cast<float>(byte) / 255);
+    };
+    const rl::vec3 background{linear(rl::kBackground.r), linear(rl::kBackground.g),
+                              linear(rl::kBackground.b)};
+    perspective::TargetOptions samples;
+    samples.samples = n;
+    perspective::RenderTarget<rl::vec3> target(width, height, samples, background);
+    const Supersampling ssaa{offsets};
+    const Multisampling msaa{offsets, options.shade_at};
+    const perspective::PipelineOptions& pipeline = shadow.render.pipeline;
+    Frame f;
+    f.counts = shadows::draw_shadowed(
+        models, camera, aspect, shadow, map,
+        [&](const normal_mapping::MappedModel&, const shading::Surface& surface,
+            const shadows::ShadowedShader& shader) {
+            switch (options.method) {
+                case Method::ssaa:
+                    return perspective::draw(surface, shader, target, pipeline, ssaa);
+                case Method::msaa:
+                    return perspective::draw(surface, shader, target, pipeline, msaa);
+                case Method::none:
+                    break;
+            }
+            return perspective::draw(surface, shader, target, pipeline);
+        });
+    f.light = resolve(target.colour(), offsets, options.resolve);
+    f.picture = rl::Image(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            f.picture.set(x, y, shading::encode(f.light.get(x, y), shading::Output::srgb));
+    return f;
+}
+
+}  // namespace antialiasing

@@ -1,0 +1,65 @@
+// Lesson 11's render: lesson 08's scene and light into a target of linear
+// light holding several samples a pixel, filled by a coverage policy
+// (coverage.hpp), then resolved (resolve.hpp) and encoded to sRGB.
+//
+//   antialiasing::AaOptions aa;  // multisampling, 4 standard samples, box resolve
+//   const antialiasing::Frame f = antialiasing::render(models, camera, shadow, aa, 800, 800);
+//   rl::save_image("11.tga", f.picture);
+#pragma once
+
+#include "08_shadows/scene.hpp"
+#include "coverage.hpp"
+#include "resolve.hpp"
+#include "sample_pattern.hpp"
+
+namespace antialiasing {
+
+// none: one sample a pixel, at its centre (lesson 05's policy). ssaa:
+// supersampling, every sample shaded. msaa: multisampling, coverage and
+// depth per sample, one shading a pixel per triangle.
+enum class Method { none, ssaa, msaa };
+inline constexpr std::array<rl::Named<Method>, 3> kMethodNames = {
+    {{Method::none, "none"}, {Method::ssaa, "ssaa"}, {Method::msaa, "msaa"}}};
+inline constexpr std::array<Method, 3> kMethods = rl::values_of(kMethodNames);
+inline const char* name(Method value) {
+    return rl::name_in(kMethodNames, value);
+}
+
+struct AaOptions {
+    Method method = Method::msaa;
+    int samples = 4;
+    Pattern pattern = Pattern::standard;
+    Resolve resolve = Resolve::box;
+    ShadeAt shade_at = ShadeAt::centre;  // msaa only
+};
+
+// The samples the options' method takes a pixel: 1 for none.
+int samples_of(const AaOptions& options);
+
+// Throws std::invalid_argument naming the option: a pattern without that
+// many samples (none takes 1 whatever --samples says, and says so only by
+// ignoring it: the program refuses the combination itself).
+void check(const AaOptions& options);
+
+// A frame holds 16 bytes a sample (linear colour in float and depth): its
+// samples, pixels times samples a pixel, are capped at 2^26 (1 GiB; 4096 x
+// 4096 at 4 samples, 2048 x 2048 at 16).
+inline constexpr long long kMaxFrameSamples = 1LL << 26;
+// Throws std::invalid_argument naming the cap when width x height x samples is past it.
+void check_frame_size(int width, int height, int samples);
+
+struct Frame {
+    rl::Grid<rl::vec3> light;  // resolved, linear
+    rl::Image picture;         // the light in sRGB bytes
+    perspective::PipelineCounts counts;
+};
+
+// Lesson 08's two passes, the second through the options' coverage policy,
+// then the resolve.
+Frame render(const std::vector<normal_mapping::MappedModel>& models,
+             const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+             const AaOptions& options, int width, int height);
+
+using shadows::load_scene;  // lesson 08's scene and camera
+
+}  // namespace antialiasing

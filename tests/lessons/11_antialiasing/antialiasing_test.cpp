@@ -1,0 +1,253 @@
+// Lesson 11's tests: the sample patterns, the coverage policies (every
+// sample of a shared edge stored once, the shading rate of each policy,
+// centroid shading inside the triangle, a program that discards), the
+// resolves (linear light, the tent), and the frame's caps.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+
+#include "06_shading/colour.hpp"
+#include "11_antialiasing/scene.hpp"
+
+namespace {
+
+using namespace antialiasing;
+using perspective::ClipVertex;
+using perspective::Fragment;
+
+// Triangles given directly in clip space (w = 1: clip space is NDC).
+struct ClipCorner {
+    rl::vec4 position;
+    float u;  // an attribute: 1 at each face's first corner, 0 at the others
+};
+struct ClipTriangles {
+    std::vector<std::array<rl::vec4, 3>> faces;
+    int face_count() const { return static_cast<int>(faces.size()); }
+    ClipCorner corner(int face, int k) const {
+        return {faces[static_cast<std::size_t>(face)][static_cast<std::size_t>(k)],
+                k == 0 ? 1.0f : 0.0f};
+    }
+};
+
+// A square filling the screen, cut along a diagonal into two triangles
+// that share that edge, plus a fan of thin slivers around the centre: many
+// edges shared, at every slant.
+ClipTriangles shared_edges() {
+    ClipTriangles t{{{rl::vec4{-1, -1, 0, 1}, rl::vec4{1, -1, 0, 1}, rl::vec4{1, 1, 0, 1}},
+                     {rl::vec4{-1, -1, 0, 1}, rl::vec4{1, 1, 0, 1}, rl::vec4{-1, 1, 0, 1}}}};
+    return t;
+}
+ClipTriangles fan(int blades) {
+    ClipTriangles t;
+    const float pi = 3.14159265f;
+    for (int i = 0; i < blades; ++i) {
+        const float a0 = 2 * pi * static_cast<float>(i) / static_cast<float>(blades) + 0.1f,
+                    a1 = 2 * pi * static_cast<float>(i + 1) / static_cast<float>(blades) + 0.1f;
+        t.faces.push_back({rl::vec4{0.013f, -0.021f, 0, 1},
+                           rl::vec4{2 * std::cos(a0), 2 * std::sin(a0), 0, 1},
+                           rl::vec4{2 * std::cos(a1), 2 * std::sin(a1), 0, 1}});
+    }
+    return t;
+}
+
+// Writes a constant colour; counts its fragment stage's runs; records the
+// attribute u where it runs.
+struct Counted {
+    using Varyings = float;
+    int* runs;
+    float* lowest_u;
+    ClipVertex<float> vertex(const ClipCorner& c) const {
+        return {rl::cast<double>(c.position), c.u};
+    }
+    rl::vec3 fragment(const Fragment<float>& f) const {
+        ++*runs;
+        *lowest_u = std::min(*lowest_u, f.varyings);
+        return {1, 1, 1};
+    }
+};
+
+using Target = perspective::RenderTarget<rl::vec3>;
+
+Target target_of(int size, int samples) {
+    perspective::TargetOptions o;
+    o.samples = samples;
+    o.depth.compare = zbuffer::DepthCompare::always;  // every covered sample is stored
+    return Target(size, size, o, rl::vec3{0, 0, 0});
+}
+
+TEST(SamplePattern, EachLiesInThePixelWithItsOwnRowAndColumn) {
+    for (Pattern p : kPatterns)
+        for (int n : {1, 2, 4, 8, 16}) {
+            if (!has_count(p, n)) continue;
+            const std::vector<rl::vec2> offsets = sample_offsets(p, n);
+            ASSERT_EQ(offsets.size(), static_cast<std::size_t>(n));
+            std::set<float> xs, ys;
+            for (rl::vec2 o : offsets) {
+                // Direct3D's 16 puts two samples on the pixel's border (-8/16).
+                EXPECT_LE(std::abs(o.x), 0.5f) << name(p) << " " << n;
+                EXPECT_LE(std::abs(o.y), 0.5f) << name(p) << " " << n;
+                xs.insert(o.x), ys.insert(o.y);
+            }
+            // The ordered grid shares its rows and columns (n x n samples on
+            // sqrt(n) heights); the others give each sample its own.
+            const std::size_t expected = p == Pattern::grid
+                                             ? static_cast<std::size_t>(std::lround(std::sqrt(n)))
+                                             : static_cast<std::size_t>(n);
+            EXPECT_EQ(xs.size(), expected) << name(p) << " " << n;
+            EXPECT_EQ(ys.size(), expected) << name(p) << " " << n;
+        }
+}
+
+TEST(SamplePattern, CountsAPatternLacksAreRefused) {
+    EXPECT_THROW(sample_offsets(Pattern::rotated, 8), std::invalid_argument);
+    EXPECT_THROW(sample_offsets(Pattern::grid, 8), std::invalid_argument);
+    EXPECT_THROW(sample_offsets(Pattern::standard, 3), std::invalid_argument);
+    EXPECT_THROW(check(AaOptions{.method = Method::ssaa, .samples = 2, .pattern = Pattern::grid}),
+                 std::invalid_argument);
+    EXPECT_NO_THROW(check(AaOptions{.method = Method::none, .samples = 3}));
+}
+
+// Lesson 02's fill rule, applied per sample: along every shared edge each
+// sample is stored by exactly one of the two triangles, whatever the
+// pattern (no sample twice, none left out), for both policies.
+TEST(Coverage, SharedEdgesStoreEachSampleOnce) {
+    for (Pattern p : kPatterns)
+        for (int n : {4, 16}) {
+            if (!has_count(p, n)) continue;
+            const std::vector<rl::vec2> offsets = sample_offsets(p, n);
+            for (const ClipTriangles& geometry : {shared_edges(), fan(23)}) {
+                int runs = 0;
+                float lowest = 1;
+                Target ssaa = target_of(29, n), msaa = target_of(29, n);
+                const auto a = perspective::draw(geometry, Counted{&runs, &lowest}, ssaa, {},
+                                                 Supersampling{offsets});
+                const auto b = perspective::draw(geometry, Counted{&runs, &lowest}, msaa, {},
+                                                 Multisampling{offsets});
+                const std::size_t all = 29u * 29u * static_cast<std::size_t>(n);
+                EXPECT_EQ(a.fragments, all) << name(p) << " " << n;
+                EXPECT_EQ(b.fragments, all) << name(p) << " " << n;
+                for (const rl::vec3& c : ssaa.colour().pixels()) ASSERT_EQ(c.x, 1.0f);
+                for (const rl::vec3& c : msaa.colour().pixels()) ASSERT_EQ(c.x, 1.0f);
+            }
+        }
+}
+
+// Supersampling runs the fragment stage once a sample, multisampling once
+// a pixel a triangle reaches: on one triangle covering the screen, 16 times
+// fewer runs at 16 samples.
+TEST(Coverage, EachPolicyShadesAtItsRate) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, 16);
+    const ClipTriangles covering{
+        {{rl::vec4{-1, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{-1, 3, 0, 1}}}};
+    int ssaa_runs = 0, msaa_runs = 0;
+    float lowest = 1;
+    Target a = target_of(20, 16), b = target_of(20, 16);
+    perspective::draw(covering, Counted{&ssaa_runs, &lowest}, a, {}, Supersampling{offsets});
+    perspective::draw(covering, Counted{&msaa_runs, &lowest}, b, {}, Multisampling{offsets});
+    EXPECT_EQ(ssaa_runs, 20 * 20 * 16);
+    EXPECT_EQ(msaa_runs, 20 * 20);
+    // A policy refuses a target of another sample count.
+    Target four = target_of(8, 4);
+    EXPECT_THROW(
+        perspective::draw(covering, Counted{&msaa_runs, &lowest}, four, {}, Multisampling{offsets}),
+        std::invalid_argument);
+}
+
+// At a pixel the triangle covers only in part, its centre can lie outside:
+// shading there extrapolates the varyings (u below 0 here, where u is 0 on
+// the far edge); shading at the centroid of the covered samples stays in.
+TEST(Coverage, CentroidShadingStaysInsideTheTriangle) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, 8);
+    // About 5 pixels wide: u falls by a fifth a pixel towards the edge x = -0.6.
+    const ClipTriangles thin{{{rl::vec4{-0.9f, -0.9f, 0, 1}, rl::vec4{-0.6f, -0.9f, 0, 1},
+                               rl::vec4{-0.6f, -0.55f, 0, 1}}}};
+    float centre_lowest = 1, centroid_lowest = 1;
+    int runs = 0;
+    Target a = target_of(31, 8), b = target_of(31, 8);
+    perspective::draw(thin, Counted{&runs, &centre_lowest}, a, {},
+                      Multisampling{offsets, ShadeAt::centre});
+    perspective::draw(thin, Counted{&runs, &centroid_lowest}, b, {},
+                      Multisampling{offsets, ShadeAt::centroid});
+    EXPECT_LT(centre_lowest, -0.01f);
+    EXPECT_GE(centroid_lowest, -1e-6f);
+}
+
+// A program that discards under multisampling discards the pixel's whole
+// share of the triangle: nothing stored, no depth written.
+struct Discarding {
+    using Varyings = float;
+    static constexpr bool may_discard = true;
+    ClipVertex<float> vertex(const ClipCorner& c) const {
+        return {rl::cast<double>(c.position), c.u};
+    }
+    std::optional<rl::vec3> fragment(const Fragment<float>& f) const {
+        if (f.x % 2 == 0) return std::nullopt;
+        return rl::vec3{1, 1, 1};
+    }
+};
+
+TEST(Coverage, MultisamplingWithADiscardingProgramStoresNothingThere) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, 4);
+    perspective::TargetOptions four;
+    four.samples = 4;
+    perspective::RenderTarget<rl::vec3> t(8, 8, four, rl::vec3{0, 0, 0});
+    perspective::draw(shared_edges(), Discarding{}, t, {}, Multisampling{offsets});
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int s = 0; s < 4; ++s) {
+                EXPECT_EQ(t.colour().get(4 * x + s, y).x, x % 2 == 0 ? 0.0f : 1.0f);
+                EXPECT_EQ(t.depth()->get(4 * x + s, y) == t.depth_state.clear, x % 2 == 0);
+            }
+}
+
+// The resolve in linear light: a pixel half covered by white over black is
+// half the light, which sRGB encodes as 188; averaging the encoded bytes
+// (255 and 0) would give 128, far darker: every edge would look too thin.
+TEST(Resolve, AHalfCoveredPixelIsHalfTheLight) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::grid, 4);
+    Target t = target_of(4, 4);
+    int runs = 0;
+    float lowest = 1;
+    // A vertical edge through pixel 1's centre (x = 1.5 pixels of 4), so
+    // that 2 of its 4 grid samples are covered.
+    const float x = (1.5f / 4) * 2 - 1;
+    const ClipTriangles right{
+        {{rl::vec4{x, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{x, 3, 0, 1}}}};
+    perspective::draw(right, Counted{&runs, &lowest}, t, {}, Supersampling{offsets});
+    const rl::Grid<rl::vec3> light = resolve(t.colour(), offsets, Resolve::box);
+    EXPECT_FLOAT_EQ(light.get(1, 0).x, 0.5f);
+    EXPECT_EQ(shading::encode(light.get(1, 0), shading::Output::srgb).r, 188);
+    EXPECT_EQ(light.get(0, 0).x, 0.0f);
+    EXPECT_EQ(light.get(2, 0).x, 1.0f);
+}
+
+// The tent keeps a flat picture flat and spreads an edge over one more
+// pixel on each side than the box.
+TEST(Resolve, TheTentKeepsFlatLightAndWidensAnEdge) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, 8);
+    rl::Grid<rl::vec3> flat(5 * 8, 3, rl::vec3{0.25f, 0.5f, 2});
+    const rl::Grid<rl::vec3> a = resolve(flat, offsets, Resolve::tent);
+    for (const rl::vec3& c : a.pixels()) {
+        EXPECT_FLOAT_EQ(c.x, 0.25f);
+        EXPECT_FLOAT_EQ(c.y, 0.5f);
+        EXPECT_FLOAT_EQ(c.z, 2);
+    }
+    rl::Grid<rl::vec3> step(5 * 8, 1, rl::vec3{0, 0, 0});
+    for (int x = 3 * 8; x < 5 * 8; ++x) step.at(x, 0) = {1, 1, 1};  // pixels 3 and 4 white
+    const rl::Grid<rl::vec3> box = resolve(step, offsets, Resolve::box),
+                             tent = resolve(step, offsets, Resolve::tent);
+    EXPECT_EQ(box.get(2, 0).x, 0.0f);
+    EXPECT_GT(tent.get(2, 0).x, 0.05f);
+    EXPECT_LT(tent.get(3, 0).x, 1.0f);
+}
+
+TEST(Frame, SamplesPastTheCapAreRefused) {
+    EXPECT_NO_THROW(check_frame_size(4096, 4096, 4));
+    EXPECT_THROW(check_frame_size(4096, 4096, 8), std::invalid_argument);
+    EXPECT_THROW(check_frame_size(2049, 2048, 16), std::invalid_argument);
+}
+
+}  // namespace
