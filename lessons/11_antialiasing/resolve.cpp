@@ -3,12 +3,12 @@
 #include <cmath>
 
 #include "05_perspective/render_target.hpp"
+#include "06_shading/colour.hpp"
 
 namespace antialiasing {
 
 namespace {
 
-// [doc:tent]
 // The tent's weight of a sample at (dx, dy) pixels from a pixel's centre.
 double tent(double dx, double dy) {
     return std::max(0.0, 1 - std::abs(dx)) * std::max(0.0, 1 - std::abs(dy));
@@ -34,7 +34,6 @@ rl::vec3 tent_at(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>&
     return {static_cast<float>(sum[0] / weights), static_cast<float>(sum[1] / weights),
             static_cast<float>(sum[2] / weights)};
 }
-// [/doc:tent]
 
 }  // namespace
 
@@ -45,6 +44,14 @@ rl::Grid<rl::vec3> resolve(const rl::Grid<rl::vec3>& samples, const std::vector<
     rl::Grid<rl::vec3> out(samples.width() / n, samples.height());
     for (int y = 0; y < out.height(); ++y)
         for (int x = 0; x < out.width(); ++x) out.at(x, y) = tent_at(samples, offsets, x, y);
+    return out;
+}
+
+rl::Image encoded(const rl::Grid<rl::vec3>& light) {
+    rl::Image out(light.width(), light.height());
+    for (int y = 0; y < light.height(); ++y)
+        for (int x = 0; x < light.width(); ++x)
+            out.set(x, y, shading::encode(light.get(x, y), shading::Output::srgb));
     return out;
 }
 

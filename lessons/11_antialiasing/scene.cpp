@@ -26,15 +26,17 @@ void check_frame_size(int width, int height, int samples) {
                                     "(16 bytes each: 1 GiB)");
 }
 
-Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
-             const AaOptions& options, int width, int height) {
-    check(options);
-    const int n = samples_of(options);
+std::vector<rl::vec2> offsets_of(const AaOptions& options) {
+    if (options.method == Method::none) return {{0, 0}};
+    return sample_offsets(options.pattern, options.samples);
+}
+
+SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models,
+                          const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                          Method method, const std::vector<rl::vec2>& offsets, ShadeAt shade_at,
+                          int width, int height, perspective::PipelineCounts* counts) {
+    const int n = static_cast<int>(offsets.size());
     check_frame_size(width, height, n);
-    const std::vector<rl::vec2> offsets = options.method == Method::none
-                                              ? std::vector<rl::vec2>{{0, 0}}
-                                              : sample_offsets(options.pattern, options.samples);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, shadow);
     // The background in linear light, so that edges blend with it as light.
@@ -45,16 +47,15 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
                               linear(rl::kBackground.b)};
     perspective::TargetOptions samples;
     samples.samples = n;
-    perspective::RenderTarget<rl::vec3> target(width, height, samples, background);
+    SampleTarget target(width, height, samples, background);
     const Supersampling ssaa{offsets};
-    const Multisampling msaa{offsets, options.shade_at};
+    const Multisampling msaa{offsets, shade_at};
     const perspective::PipelineOptions& pipeline = shadow.render.pipeline;
-    Frame f;
-    f.counts = shadows::draw_shadowed(
+    const perspective::PipelineCounts drawn = shadows::draw_shadowed(
         models, camera, aspect, shadow, map,
         [&](const normal_mapping::MappedModel&, const shading::Surface& surface,
             const shadows::ShadowedShader& shader) {
-            switch (options.method) {
+            switch (method) {
                 case Method::ssaa:
                     return perspective::draw(surface, shader, target, pipeline, ssaa);
                 case Method::msaa:
@@ -64,11 +65,20 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
             }
             return perspective::draw(surface, shader, target, pipeline);
         });
+    if (counts) *counts = drawn;
+    return target;
+}
+
+Frame render(const std::vector<normal_mapping::MappedModel>& models,
+             const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+             const AaOptions& options, int width, int height) {
+    check(options);
+    const std::vector<rl::vec2> offsets = offsets_of(options);
+    Frame f;
+    const SampleTarget target = draw_samples(models, camera, shadow, options.method, offsets,
+                                             options.shade_at, width, height, &f.counts);
     f.light = resolve(target.colour(), offsets, options.resolve);
-    f.picture = rl::Image(width, height);
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x)
-            f.picture.set(x, y, shading::encode(f.light.get(x, y), shading::Output::srgb));
+    f.picture = encoded(f.light);
     return f;
 }
 

@@ -60,6 +60,17 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
              const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
              const AaOptions& options, int width, int height);
 
+// What render() draws before its resolve: every sample of the frame, for
+// explicit offsets (the lab's truth draws 256 a pixel as 16 frames of 16).
+using SampleTarget = perspective::RenderTarget<rl::vec3>;
+SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models,
+                          const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                          Method method, const std::vector<rl::vec2>& offsets, ShadeAt shade_at,
+                          int width, int height, perspective::PipelineCounts* counts = nullptr);
+
+// The offsets the options ask for: {0, 0} for none.
+std::vector<rl::vec2> offsets_of(const AaOptions& options);
+
 using shadows::load_scene;  // lesson 08's scene and camera
 
 }  // namespace antialiasing

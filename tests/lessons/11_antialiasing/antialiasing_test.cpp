@@ -219,7 +219,7 @@ TEST(Resolve, AHalfCoveredPixelIsHalfTheLight) {
     perspective::draw(right, Counted{&runs, &lowest}, t, {}, Supersampling{offsets});
     const rl::Grid<rl::vec3> light = resolve(t.colour(), offsets, Resolve::box);
     EXPECT_FLOAT_EQ(light.get(1, 0).x, 0.5f);
-    EXPECT_EQ(shading::encode(light.get(1, 0), shading::Output::srgb).r, 188);
+    EXPECT_EQ(encoded(light).at(1, 0).r, 188);
     EXPECT_EQ(light.get(0, 0).x, 0.0f);
     EXPECT_EQ(light.get(2, 0).x, 1.0f);
 }
