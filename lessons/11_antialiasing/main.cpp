@@ -23,7 +23,8 @@ int main(int argc, char** argv) {
     perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--aa", options.method, antialiasing::kMethods,
-                          "How a pixel is sampled: once, supersampled or multisampled");
+                          "How a pixel is sampled: once, supersampled, multisampled, or once and "
+                          "then the edge filter");
     CLI::Option* samples =
         app.add_option("--samples", options.samples,
                        "Samples a pixel for ssaa and msaa: 2, 4, 8 or 16 (as the pattern has them)")
@@ -49,9 +50,10 @@ int main(int argc, char** argv) {
     return rl::guarded_main("11_antialiasing", [&] {
         rl::check_image_output(output);
         // Options the method would ignore are refused, not ignored.
-        if (options.method == antialiasing::Method::none && samples->count() > 0 &&
-            options.samples != 1)
-            throw std::invalid_argument("--samples: --aa none takes one sample a pixel");
+        if (antialiasing::samples_of(options) == 1 && samples->count() > 0 && options.samples != 1)
+            throw std::invalid_argument("--samples: --aa " +
+                                        std::string(antialiasing::name(options.method)) +
+                                        " takes one sample a pixel");
         if (options.method != antialiasing::Method::msaa && shade_at->count() > 0)
             throw std::invalid_argument("--shade-at: only --aa msaa shades once a pixel");
         antialiasing::check(options);

@@ -7,12 +7,20 @@
 
 namespace antialiasing {
 
+namespace {
+
+bool one_sample(Method method) {
+    return method == Method::none || method == Method::post;
+}
+
+}  // namespace
+
 int samples_of(const AaOptions& options) {
-    return options.method == Method::none ? 1 : options.samples;
+    return one_sample(options.method) ? 1 : options.samples;
 }
 
 void check(const AaOptions& options) {
-    if (options.method == Method::none) return;
+    if (one_sample(options.method)) return;
     if (!has_count(options.pattern, options.samples))
         sample_offsets(options.pattern, options.samples);  // throws, naming the counts it has
 }
@@ -27,7 +35,7 @@ void check_frame_size(int width, int height, int samples) {
 }
 
 std::vector<rl::vec2> offsets_of(const AaOptions& options) {
-    if (options.method == Method::none) return {{0, 0}};
+    if (one_sample(options.method)) return {{0, 0}};
     return sample_offsets(options.pattern, options.samples);
 }
 
@@ -61,6 +69,7 @@ SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models
                 case Method::msaa:
                     return perspective::draw(surface, shader, target, pipeline, msaa);
                 case Method::none:
+                case Method::post:
                     break;
             }
             return perspective::draw(surface, shader, target, pipeline);
@@ -78,6 +87,7 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
     const SampleTarget target = draw_samples(models, camera, shadow, options.method, offsets,
                                              options.shade_at, width, height, &f.counts);
     f.light = resolve(target.colour(), offsets, options.resolve);
+    if (options.method == Method::post) f.light = edge_filter(f.light);
     f.picture = encoded(f.light);
     return f;
 }

@@ -9,6 +9,7 @@
 
 #include "08_shadows/scene.hpp"
 #include "coverage.hpp"
+#include "post_filter.hpp"
 #include "resolve.hpp"
 #include "sample_pattern.hpp"
 
@@ -16,11 +17,14 @@ namespace antialiasing {
 
 // none: one sample a pixel, at its centre (lesson 05's policy). ssaa:
 // supersampling, every sample shaded. msaa: multisampling, coverage and
-// depth per sample, one shading a pixel per triangle.
-enum class Method { none, ssaa, msaa };
-inline constexpr std::array<rl::Named<Method>, 3> kMethodNames = {
-    {{Method::none, "none"}, {Method::ssaa, "ssaa"}, {Method::msaa, "msaa"}}};
-inline constexpr std::array<Method, 3> kMethods = rl::values_of(kMethodNames);
+// depth per sample, one shading a pixel per triangle. post: one sample a
+// pixel, then the edge filter of post_filter.hpp on the picture.
+enum class Method { none, ssaa, msaa, post };
+inline constexpr std::array<rl::Named<Method>, 4> kMethodNames = {{{Method::none, "none"},
+                                                                   {Method::ssaa, "ssaa"},
+                                                                   {Method::msaa, "msaa"},
+                                                                   {Method::post, "post"}}};
+inline constexpr std::array<Method, 4> kMethods = rl::values_of(kMethodNames);
 inline const char* name(Method value) {
     return rl::name_in(kMethodNames, value);
 }
@@ -33,7 +37,7 @@ struct AaOptions {
     ShadeAt shade_at = ShadeAt::centre;  // msaa only
 };
 
-// The samples the options' method takes a pixel: 1 for none.
+// The samples the options' method takes a pixel: 1 for none and post.
 int samples_of(const AaOptions& options);
 
 // Throws std::invalid_argument naming the option: a pattern without that
@@ -68,7 +72,7 @@ SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models
                           Method method, const std::vector<rl::vec2>& offsets, ShadeAt shade_at,
                           int width, int height, perspective::PipelineCounts* counts = nullptr);
 
-// The offsets the options ask for: {0, 0} for none.
+// The offsets the options ask for: {0, 0} for none and post.
 std::vector<rl::vec2> offsets_of(const AaOptions& options);
 
 using shadows::load_scene;  // lesson 08's scene and camera

@@ -244,6 +244,50 @@ TEST(Resolve, TheTentKeepsFlatLightAndWidensAnEdge) {
     EXPECT_LT(tent.get(3, 0).x, 1.0f);
 }
 
+// The edge filter on a picture of one sample a pixel: a half plane of white
+// over black whose edge rises 1 pixel in 8, drawn by pixel centres (steps).
+// The filter leaves flat regions as they are and brings the edge's pixels
+// nearer their true coverage; a line one pixel wide, which is not an edge
+// but a detail, is smeared: its brightest pixels lose light.
+rl::Grid<rl::vec3> slanted_edge(int size, bool coverage) {
+    rl::Grid<rl::vec3> out(size, size, rl::vec3{0, 0, 0});
+    for (int y = 0; y < size; ++y)
+        for (int x = 0; x < size; ++x) {
+            const double edge = 10.3 + (x + 0.5) / 8;  // white above it
+            const double share =
+                coverage ? std::clamp(y + 1 - edge, 0.0, 1.0) : (y + 0.5 > edge ? 1.0 : 0.0);
+            // The share of the pixel's height above the edge at its centre
+            // column: its exact coverage while the edge crosses it straight
+            // (the edge is linear across the pixel's width).
+            const float v = static_cast<float>(share);
+            out.at(x, y) = {v, v, v};
+        }
+    return out;
+}
+
+TEST(EdgeFilter, FlatLightStaysAndAnEdgeNearsItsCoverage) {
+    const rl::Grid<rl::vec3> flat(16, 16, rl::vec3{0.3f, 0.3f, 0.3f});
+    EXPECT_EQ(edge_filter(flat).pixels(), flat.pixels());
+    const rl::Grid<rl::vec3> stepped = slanted_edge(48, false), exact = slanted_edge(48, true);
+    const rl::Grid<rl::vec3> filtered = edge_filter(stepped);
+    double before = 0, after = 0;
+    for (int y = 4; y < 44; ++y)
+        for (int x = 4; x < 44; ++x) {
+            const auto srgb = [](float v) { return shading::linear_to_srgb(v); };
+            before += std::abs(srgb(stepped.get(x, y).x) - srgb(exact.get(x, y).x));
+            after += std::abs(srgb(filtered.get(x, y).x) - srgb(exact.get(x, y).x));
+        }
+    EXPECT_LT(after, 0.6 * before) << before << " -> " << after;
+}
+
+TEST(EdgeFilter, SmearsALineOnePixelWide) {
+    rl::Grid<rl::vec3> line(16, 16, rl::vec3{0, 0, 0});
+    for (int x = 0; x < 16; ++x) line.at(x, 8) = {1, 1, 1};
+    const rl::Grid<rl::vec3> filtered = edge_filter(line);
+    EXPECT_LT(filtered.get(8, 8).x, 0.9f);                         // the line loses light
+    EXPECT_GT(filtered.get(8, 7).x + filtered.get(8, 9).x, 0.1f);  // to its neighbours
+}
+
 TEST(Frame, SamplesPastTheCapAreRefused) {
     EXPECT_NO_THROW(check_frame_size(4096, 4096, 4));
     EXPECT_THROW(check_frame_size(4096, 4096, 8), std::invalid_argument);
