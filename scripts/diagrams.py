@@ -1331,6 +1331,77 @@ def gbuffer_passes(out):
     save(figure, out, "10_gbuffer.svg")
 
 
+# Lesson 11's sample patterns, offsets from the pixel's centre in pixels,
+# window y up: the ordered grid, the rotated grid, and Direct3D's standard
+# 8 and 16 (published in sixteenths, y down; the same tables as
+# lessons/11_antialiasing/sample_pattern.cpp).
+AA_PATTERNS = [
+    ("ordered grid, 4", [((i + 0.5) / 2 - 0.5, (j + 0.5) / 2 - 0.5) for j in range(2) for i in range(2)]),
+    ("rotated grid, 4", [(0.125, 0.375), (-0.375, 0.125), (-0.125, -0.375), (0.375, -0.125)]),
+    ("standard, 8", [(x / 16, -y / 16) for x, y in ((1, -3), (-1, 3), (5, 1), (-3, -5), (-5, 5), (-7, -1),
+                                                     (3, 7), (7, -7))]),
+    ("standard, 16", [(x / 16, -y / 16) for x, y in ((1, 1), (-1, -3), (-3, 2), (4, -1), (-5, -2), (2, 5), (5, 3),
+                                                      (3, -5), (-2, 6), (0, -7), (-4, -6), (-6, 4), (-8, 0),
+                                                      (7, -4), (6, 7), (-7, -8))]),
+]
+
+
+def aa_patterns(out):
+    # Each pattern in one pixel, and the rows its samples stand on (dotted):
+    # a nearly horizontal edge moving up through the pixel covers the
+    # samples one row at a time, so the pixel takes as many shades as the
+    # pattern has rows (+1).
+    figure, panels = plt.subplots(1, 4, figsize=(8.4, 2.6))
+    for axes, (title, points) in zip(panels, AA_PATTERNS):
+        axes.add_patch(Rectangle((-0.5, -0.5), 1, 1, fill=False, ec=INK, lw=1))
+        for y in sorted({round(p[1], 4) for p in points}):
+            axes.plot([-0.5, 0.5], [y, y], color=LINE, lw=0.5, ls=":")
+        axes.plot([p[0] for p in points], [p[1] for p in points], "o", color=ACCENT, ms=4)
+        axes.plot([0], [0], "+", color=INK, ms=6)
+        rows = len({round(p[1], 4) for p in points})
+        axes.set_title(f"{title}\n{rows} rows: {rows + 1} shades", fontsize=8.5)
+        axes.set_xlim(-0.6, 0.6)
+        axes.set_ylim(-0.6, 0.6)
+        axes.set_aspect("equal")
+        axes.axis("off")
+    figure.suptitle("Where a pixel's samples lie (+: the centre)", fontsize=10)
+    save(figure, out, "11_patterns.svg")
+
+
+def aa_shading_rate(out):
+    # One pixel, a triangle's edge crossing it (the triangle to the lower
+    # left). Supersampling shades every covered sample; multisampling tests
+    # every sample but shades once: at the centre (here outside the
+    # triangle: its values extrapolated) or at the covered samples' centroid.
+    points = AA_PATTERNS[2][1]
+    inside = [p for p in points if p[0] + p[1] < -0.15]  # below the line x + y = -0.15
+    centroid = (sum(p[0] for p in inside) / len(inside), sum(p[1] for p in inside) / len(inside))
+    figure, panels = plt.subplots(1, 2, figsize=(6.4, 3.0))
+    for axes, title in zip(panels, ("supersampling: each covered sample shaded",
+                                    "multisampling: coverage per sample, one shading")):
+        axes.add_patch(Polygon([(-0.5, 0.35), (-0.5, -0.5), (0.35, -0.5)], closed=True, fc="#fff4c8", ec="none"))
+        axes.plot([-0.5, 0.35], [0.35, -0.5], color=INK, lw=1)
+        axes.add_patch(Rectangle((-0.5, -0.5), 1, 1, fill=False, ec=INK, lw=1))
+        outside = [p for p in points if p not in inside]
+        axes.plot([p[0] for p in outside], [p[1] for p in outside], "o", mfc="white", mec=LINE, ms=5)
+        if title.startswith("super"):
+            axes.plot([p[0] for p in inside], [p[1] for p in inside], "o", color=ACCENT, ms=5)
+            axes.text(0, -0.62, f"{len(inside)} fragment runs, each at its sample", ha="center", fontsize=8)
+        else:
+            axes.plot([p[0] for p in inside], [p[1] for p in inside], "s", mfc="white", mec=ACCENT, ms=5)
+            axes.plot([0], [0], "*", color=LINE, ms=9)
+            axes.text(0.03, 0.06, "centre", fontsize=7.5, color=LINE)
+            axes.plot([centroid[0]], [centroid[1]], "*", color=ACCENT, ms=9)
+            axes.text(centroid[0] + 0.03, centroid[1] + 0.05, "centroid", fontsize=7.5, color=ACCENT)
+            axes.text(0, -0.62, "1 fragment run, stored in the covered samples", ha="center", fontsize=8)
+        axes.set_title(title, fontsize=8.5)
+        axes.set_xlim(-0.6, 0.6)
+        axes.set_ylim(-0.7, 0.6)
+        axes.set_aspect("equal")
+        axes.axis("off")
+    save(figure, out, "11_shading_rate.svg")
+
+
 def ao_kernel_panel(axes, title, half):
     """A floor point p beside a box, seen from the side; the eye up and to the left."""
     axes.add_patch(Rectangle((-1.6, -0.3), 3.4, 0.3, color=SOFT))
@@ -1431,7 +1502,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes):
+                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 

@@ -30,6 +30,7 @@ inline void check_samples(int target_samples, std::size_t offsets) {
                                     std::to_string(target_samples));
 }
 
+// [doc:supersampling]
 // Supersampling: every sample tested and shaded on its own, the fragment
 // stage run at the sample itself (its weights there), through lesson 05's
 // fragment operations. A pixel's cost is its samples' count times one
@@ -58,6 +59,7 @@ struct Supersampling {
         return ok;
     }
 };
+// [/doc:supersampling]
 
 // Where multisampling runs the fragment stage in a pixel: at its centre
 // (which may lie outside the triangle: its varyings are then extrapolated,
@@ -88,6 +90,7 @@ inline triangles::PixelRect box_within(const triangles::ScreenTriangle& t,
             clamp(std::ceil(y1) + 1, rect.y0, rect.y1)};
 }
 
+// [doc:multisampling]
 // Multisampling: coverage and depth per sample, the fragment stage once per
 // pixel the triangle reaches (at `at`), its outputs stored in every sample
 // that it covers and that passed the depth test. A program that discards
@@ -171,5 +174,6 @@ struct Multisampling {
         return ok;
     }
 };
+// [/doc:multisampling]
 
 }  // namespace antialiasing

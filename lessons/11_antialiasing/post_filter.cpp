@@ -47,6 +47,7 @@ class Picture {
     rl::FloatImage luma_;
 };
 
+// [doc:edge-filter]
 // The filtered light of pixel (x, y).
 rl::vec3 filtered(const Picture& p, int x, int y, const EdgeFilterOptions& o) {
     const float c = p.luma_at(x, y), n = p.luma_at(x, y + 1), s = p.luma_at(x, y - 1),
@@ -116,6 +117,7 @@ rl::vec3 filtered(const Picture& p, int x, int y, const EdgeFilterOptions& o) {
     const rl::vec3 here = p.light_at(x, y), there = p.light_at(nx, ny);
     return here * (1 - blend) + there * blend;
 }
+// [/doc:edge-filter]
 
 }  // namespace
 

@@ -9,6 +9,7 @@ namespace antialiasing {
 
 namespace {
 
+// [doc:tent]
 // The tent's weight of a sample at (dx, dy) pixels from a pixel's centre.
 double tent(double dx, double dy) {
     return std::max(0.0, 1 - std::abs(dx)) * std::max(0.0, 1 - std::abs(dy));
@@ -34,6 +35,7 @@ rl::vec3 tent_at(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>&
     return {static_cast<float>(sum[0] / weights), static_cast<float>(sum[1] / weights),
             static_cast<float>(sum[2] / weights)};
 }
+// [/doc:tent]
 
 }  // namespace
 

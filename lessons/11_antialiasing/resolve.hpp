@@ -32,8 +32,10 @@ inline const char* name(Resolve value) {
 rl::Grid<rl::vec3> resolve(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>& offsets,
                            Resolve filter);
 
+// [doc:encoded]
 // The resolved light as sRGB bytes: encoded after the resolve, never before
 // (the samples' mean must be a mean of light).
 rl::Image encoded(const rl::Grid<rl::vec3>& light);
+// [/doc:encoded]
 
 }  // namespace antialiasing

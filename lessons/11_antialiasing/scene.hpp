@@ -34,7 +34,9 @@ struct AaOptions {
     int samples = 4;
     Pattern pattern = Pattern::standard;
     Resolve resolve = Resolve::box;
-    ShadeAt shade_at = ShadeAt::centre;  // msaa only
+    // msaa only. The centroid: the lab finds msaa 4 at the centroid as near
+    // the truth at edges as 8 at the centre, in half the time.
+    ShadeAt shade_at = ShadeAt::centroid;
 };
 
 // The samples the options' method takes a pixel: 1 for none and post.

@@ -23,6 +23,7 @@ PROGRAMS = {
     "08": "08_shadows",
     "09": "09_environment",
     "10": "10_ambient_occlusion",
+    "11": "11_antialiasing",
     "12": "12_fast",
 }
 

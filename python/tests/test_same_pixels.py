@@ -224,6 +224,14 @@ def test_lesson10_gbuffer_depth(programs):
          programs.image("10", "--show", "depth", "--normal-map", "none", *SIZE))
 
 
+@pytest.mark.parametrize("aa", ["none", "ssaa", "msaa", "post"])
+def test_lesson11(programs, aa):
+    extra = {"ssaa": ["--samples", 4, "--pattern", "rotated"], "msaa": ["--shade-at", "centre"]}
+    keywords = {"ssaa": {"samples": 4, "pattern": "rotated"}, "msaa": {"shade_at": "centre"}}
+    same(rasterlab.lesson11.render(aa=aa, **keywords.get(aa, {}), **SMALL),
+         programs.image("11", "--aa", aa, *extra.get(aa, []), *SIZE))
+
+
 def test_lesson10_environment(programs):
     same(rasterlab.lesson10.render(environment="studio", **SMALL),
          programs.image("10", "--environment", "studio", *SIZE))

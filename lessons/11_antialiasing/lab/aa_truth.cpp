@@ -8,6 +8,7 @@
 
 namespace antialiasing {
 
+// [doc:truth]
 rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& models,
                                const perspective::Camera& camera,
                                const shadows::ShadowOptions& shadow, int width, int height,
@@ -45,6 +46,7 @@ rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& m
         }
     return out;
 }
+// [/doc:truth]
 
 rl::Grid<std::uint8_t> depth_edges(const std::vector<normal_mapping::MappedModel>& models,
                                    const perspective::Camera& camera,

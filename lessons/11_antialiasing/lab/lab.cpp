@@ -143,7 +143,7 @@ int main(int argc, char** argv) {
             const rl::lab::Timing& t = timings.at("frame/" + label(o));
             const int n = samples_of(o);
             table.add_row({variant(o), std::string(name(o.method)), static_cast<long long>(n),
-                           std::string(o.method == Method::none ? "centre" : name(o.pattern)),
+                           std::string(n == 1 ? "centre" : name(o.pattern)),
                            std::string(name(o.resolve)),
                            std::string(o.method == Method::msaa ? name(o.shade_at) : "sample"),
                            t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6,
