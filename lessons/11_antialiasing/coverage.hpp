@@ -21,13 +21,27 @@
 
 namespace antialiasing {
 
-// Throws std::invalid_argument unless the target holds one sample a pixel
-// for each offset of the pattern.
-inline void check_samples(int target_samples, std::size_t offsets) {
-    if (target_samples != static_cast<int>(offsets))
+// What both policies find first for a triangle: the target's samples a
+// pixel (one for each offset of the pattern, or std::invalid_argument), the
+// rectangle drawn and the depth bias; the samples the rasterizer will visit
+// are counted.
+struct Sampling {
+    int n;
+    triangles::PixelRect rect;
+    float bias;
+};
+template <class T, class... Pixels>
+Sampling start_sampling(const T& t, const perspective::RenderTarget<Pixels...>& target,
+                        std::size_t offsets, const perspective::PipelineOptions& options,
+                        perspective::PipelineCounts& counts) {
+    const int n = target.samples();
+    if (n != static_cast<int>(offsets))
         throw std::invalid_argument("a pattern of " + std::to_string(offsets) +
                                     " samples a pixel needs a target of as many, not " +
-                                    std::to_string(target_samples));
+                                    std::to_string(n));
+    const triangles::PixelRect rect = options.tile.value_or(target.bounds());
+    counts.visited += static_cast<std::size_t>(n) * perspective::box_samples(t.screen(), rect);
+    return {n, rect, perspective::depth_bias(t, target.depth_state)};
 }
 
 // [doc:supersampling]
@@ -42,15 +56,13 @@ struct Supersampling {
     bool operator()(const T& t, const P& program, perspective::RenderTarget<Pixels...>& target,
                     const perspective::PipelineOptions& options,
                     perspective::PipelineCounts& counts) const {
-        check_samples(target.samples(), offsets.size());
-        const int n = target.samples();
-        const triangles::PixelRect rect = options.tile.value_or(target.bounds());
-        const float bias = perspective::depth_bias(t, target.depth_state);
-        counts.visited += static_cast<std::size_t>(n) * perspective::box_samples(t.screen(), rect);
+        const Sampling sampling = start_sampling(t, target, offsets.size(), options, counts);
+        const int n = sampling.n;
+        const float bias = sampling.bias;
         bool ok = true;
         for (int s = 0; s < n; ++s)
             ok &= triangles::rasterize(
-                options.raster, t.screen(offsets[static_cast<std::size_t>(s)]), rect,
+                options.raster, t.screen(offsets[static_cast<std::size_t>(s)]), sampling.rect,
                 [&](int x, int y, rl::vec3 b) {
                     const float z = perspective::window_depth(t, b, bias);
                     if (perspective::fragment_operations(program, t, x, y, z, b, target, n * x + s))
@@ -103,17 +115,15 @@ struct Multisampling {
     bool operator()(const T& t, const P& program, perspective::RenderTarget<Pixels...>& target,
                     const perspective::PipelineOptions& options,
                     perspective::PipelineCounts& counts) const {
-        check_samples(target.samples(), offsets.size());
-        const int n = target.samples();
-        const triangles::PixelRect rect = options.tile.value_or(target.bounds());
-        const float bias = perspective::depth_bias(t, target.depth_state);
+        const Sampling sampling = start_sampling(t, target, offsets.size(), options, counts);
+        const int n = sampling.n;
+        const float bias = sampling.bias;
         const zbuffer::DepthState& state = target.depth_state;
         rl::FloatImage* const depth = target.depth();
-        counts.visited += static_cast<std::size_t>(n) * perspective::box_samples(t.screen(), rect);
         // Per sample of the triangle's box within the rectangle (a pixel of
         // margin for samples off the centre): its depth where the triangle
         // covers it (NaN: not covered), and whether that depth passed the test.
-        const triangles::PixelRect box = box_within(t.screen(), rect);
+        const triangles::PixelRect box = box_within(t.screen(), sampling.rect);
         const int width = box.x1 - box.x0, height = box.y1 - box.y0;
         if (width <= 0 || height <= 0) return triangles::within_raster_range(t.screen());
         std::vector<float> covered(static_cast<std::size_t>(width) * height * n, NAN);
