@@ -135,6 +135,60 @@ TEST(Coverage, SharedEdgesStoreEachSampleOnce) {
         }
 }
 
+// Each sample is tested where its pattern puts it: an edge at x = 1.6
+// pixels covers sample s of pixel 1 (centre 1.5) exactly when its offset's
+// x exceeds 0.1, for every pattern and both policies (a sample tested at
+// the centre, or with its offset mirrored, lands on the wrong side).
+TEST(Coverage, SamplesAreTestedWhereThePatternPutsThem) {
+    const float edge = 1.6f / 4 * 2 - 1;  // in NDC, on a target 4 pixels wide
+    const ClipTriangles right{
+        {{rl::vec4{edge, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{edge, 3, 0, 1}}}};
+    for (Pattern p : kPatterns)
+        for (int n : {2, 4, 8, 16}) {
+            if (!has_count(p, n)) continue;
+            const std::vector<rl::vec2> offsets = sample_offsets(p, n);
+            int runs = 0;
+            float lowest = 1;
+            Target a = target_of(4, n), b = target_of(4, n);
+            perspective::draw(right, Counted{&runs, &lowest}, a, {}, Supersampling{offsets});
+            perspective::draw(right, Counted{&runs, &lowest}, b, {}, Multisampling{offsets});
+            for (int s = 0; s < n; ++s) {
+                const float expected = offsets[static_cast<std::size_t>(s)].x > 0.1f ? 1.0f : 0.0f;
+                EXPECT_EQ(a.colour().get(n + s, 1).x, expected) << name(p) << " " << n << " " << s;
+                EXPECT_EQ(b.colour().get(n + s, 1).x, expected) << name(p) << " " << n << " " << s;
+            }
+        }
+}
+
+// Multisampling tests depth per sample and writes it only where the test
+// passed: a near triangle over part of the screen (its edge through a
+// column of pixels), then a far one over all of it; in the pixels of the
+// edge some samples pass and some do not, and those that did not keep the
+// near depth.
+TEST(Coverage, MultisamplingKeepsTheNearerDepth) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, 4);
+    const float edge = 3.5f / 6 * 2 - 1;  // through the centres of pixel column 3
+    const ClipTriangles near_part{
+        {{rl::vec4{edge, -1, -0.5f, 1}, rl::vec4{3, -1, -0.5f, 1}, rl::vec4{edge, 3, -0.5f, 1}}}};
+    const ClipTriangles far_all{
+        {{rl::vec4{-1, -1, 0.5f, 1}, rl::vec4{3, -1, 0.5f, 1}, rl::vec4{-1, 3, 0.5f, 1}}}};
+    perspective::TargetOptions four;
+    four.samples = 4;  // the default depth state: less, written
+    perspective::RenderTarget<rl::vec3> t(6, 6, four, rl::vec3{0, 0, 0});
+    int runs = 0;
+    float lowest = 1;
+    perspective::draw(near_part, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
+    const std::vector<float> after_near = t.depth()->pixels();
+    perspective::draw(far_all, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
+    int kept = 0;
+    for (std::size_t i = 0; i < after_near.size(); ++i) {
+        if (after_near[i] == t.depth_state.clear) continue;
+        EXPECT_EQ(t.depth()->pixels()[i], after_near[i]) << "sample " << i;
+        ++kept;
+    }
+    EXPECT_EQ(kept, 6 * 3 * 4 - 6 * 2);  // columns 4 and 5, and 2 of each column-3 pixel's 4
+}
+
 // Supersampling runs the fragment stage once a sample, multisampling once
 // a pixel a triangle reaches: on one triangle covering the screen, 16 times
 // fewer runs at 16 samples.
