@@ -189,6 +189,66 @@ TEST(Coverage, MultisamplingKeepsTheNearerDepth) {
     EXPECT_EQ(kept, 6 * 3 * 4 - 6 * 2);  // columns 4 and 5, and 2 of each column-3 pixel's 4
 }
 
+// A fence of slivers thinner than a pixel: vertical bars 0.25 pixel wide,
+// one a pixel, at a different place in each pixel. One sample a pixel sees
+// a bar in some pixels and not in others (all or nothing); 16 samples on
+// the ordered grid see each bar in one column of 4: a quarter of every
+// pixel, as the bars cover. And a gap 0.05 pixel wide between two
+// triangles: one sample misses it or not; every sample pattern keeps the
+// picture within 1/n of the truth there.
+ClipTriangles fence(int pixels, float width) {
+    ClipTriangles t;
+    for (int i = 0; i < pixels; ++i) {
+        const float x0 = static_cast<float>(i) + 0.1f + 0.7f * static_cast<float>(i) / pixels;
+        const float a = x0 / pixels * 2 - 1, b = (x0 + width) / pixels * 2 - 1;
+        t.faces.push_back({rl::vec4{a, -1, 0, 1}, rl::vec4{b, -1, 0, 1}, rl::vec4{b, 1, 0, 1}});
+        t.faces.push_back({rl::vec4{a, -1, 0, 1}, rl::vec4{b, 1, 0, 1}, rl::vec4{a, 1, 0, 1}});
+    }
+    return t;
+}
+
+TEST(Stability, AFenceOfSliversIsCoveredByItsShare) {
+    const int size = 16;
+    const ClipTriangles bars = fence(size, 0.25f);
+    int runs = 0;
+    float lowest = 1;
+    Target one = target_of(size, 1);
+    perspective::draw(bars, Counted{&runs, &lowest}, one);
+    Target sixteen = target_of(size, 16);
+    const std::vector<rl::vec2> grid = sample_offsets(Pattern::grid, 16);
+    perspective::draw(bars, Counted{&runs, &lowest}, sixteen, {}, Multisampling{grid});
+    const rl::Grid<rl::vec3> resolved = resolve(sixteen.colour(), grid, Resolve::box);
+    int seen = 0;
+    for (int x = 0; x < size; ++x) {
+        seen += one.colour().get(x, 5).x == 1;
+        EXPECT_NEAR(resolved.get(x, 5).x, 0.25f, 1.0f / 16) << "pixel " << x;
+    }
+    // One sample: the bars whose pixel centre they cross are whole, the others gone.
+    EXPECT_GT(seen, 0);
+    EXPECT_LT(seen, size);
+}
+
+TEST(Stability, ASubPixelGapShowsByItsShareAtMost) {
+    // Two triangles covering the screen but for a gap 0.05 pixel wide at x = 5.55.
+    const int size = 12;
+    const float g0 = 5.55f / size * 2 - 1, g1 = 5.60f / size * 2 - 1;
+    const ClipTriangles two{
+        {{rl::vec4{-1, -1, 0, 1}, rl::vec4{g0, -1, 0, 1}, rl::vec4{g0, 3, 0, 1}},
+         {rl::vec4{g1, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{g1, 3, 0, 1}},
+         {rl::vec4{-1, -1, 0, 1}, rl::vec4{g0, 3, 0, 1}, rl::vec4{-1, 3, 0, 1}}}};
+    for (int n : {4, 8, 16}) {
+        const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, n);
+        Target t = target_of(size, n);
+        int runs = 0;
+        float lowest = 1;
+        perspective::draw(two, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
+        const rl::Grid<rl::vec3> light = resolve(t.colour(), offsets, Resolve::box);
+        for (int x = 0; x < size; ++x)
+            EXPECT_GE(light.get(x, 3).x, x == 5 ? 1.0f - 1.0f / static_cast<float>(n) : 1.0f)
+                << n << " samples, pixel " << x;
+    }
+}
+
 // Supersampling runs the fragment stage once a sample, multisampling once
 // a pixel a triangle reaches: on one triangle covering the screen, 16 times
 // fewer runs at 16 samples.
