@@ -39,6 +39,13 @@ int main(int argc, char** argv) {
     CLI::Option* shade_at =
         rl::add_method_option(app, "--shade-at", options.shade_at, antialiasing::kShadeAts,
                               "msaa: where the fragment stage runs in a pixel");
+    rl::add_method_option(app, "--tone-map", options.tone, antialiasing::kToneOrders,
+                          "Lesson 09's tone map (ACES): none (the light clamped at 1), after the "
+                          "resolve, or on each sample before it");
+    app.add_option("--exposure", options.exposure_stops,
+                   "Stops: the light times 2^stops before the tone map or the clamp (-16 to 16)")
+        ->capture_default_str()
+        ->check(rl::finite_number(-16, 16));
     rl::add_method_option(app, "--normal-map", shadow.render.normal_map,
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,

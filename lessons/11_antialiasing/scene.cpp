@@ -1,5 +1,6 @@
 #include "scene.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -78,6 +79,31 @@ SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models
     return target;
 }
 
+// [doc:tone-order]
+rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
+                               const std::vector<rl::vec2>& offsets, const AaOptions& options) {
+    environment::Exposure exposure;  // ACES
+    exposure.stops = options.exposure_stops;
+    const auto each = [](rl::Grid<rl::vec3> light, auto&& f) {
+        for (rl::vec3& c : light.pixels()) c = f(c);
+        return light;
+    };
+    switch (options.tone) {
+        case ToneOrder::before_resolve:
+            return resolve(
+                each(samples, [&](rl::vec3 c) { return environment::tone_map(c, exposure); }),
+                offsets, options.resolve);
+        case ToneOrder::after_resolve:
+            return each(resolve(samples, offsets, options.resolve),
+                        [&](rl::vec3 c) { return environment::tone_map(c, exposure); });
+        case ToneOrder::none:
+            break;
+    }
+    const float scale = std::exp2(options.exposure_stops);
+    return each(resolve(samples, offsets, options.resolve), [&](rl::vec3 c) { return c * scale; });
+}
+// [/doc:tone-order]
+
 Frame render(const std::vector<normal_mapping::MappedModel>& models,
              const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
              const AaOptions& options, int width, int height) {
@@ -86,7 +112,7 @@ Frame render(const std::vector<normal_mapping::MappedModel>& models,
     Frame f;
     const SampleTarget target = draw_samples(models, camera, shadow, options.method, offsets,
                                              options.shade_at, width, height, &f.counts);
-    f.light = resolve(target.colour(), offsets, options.resolve);
+    f.light = shown_light(target.colour(), offsets, options);
     if (options.method == Method::post) f.light = edge_filter(f.light);
     f.picture = encoded(f.light);
     return f;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "08_shadows/scene.hpp"
+#include "09_environment/tone_map.hpp"
 #include "coverage.hpp"
 #include "post_filter.hpp"
 #include "resolve.hpp"
@@ -29,6 +30,23 @@ inline const char* name(Method value) {
     return rl::name_in(kMethodNames, value);
 }
 
+// Between the samples and the bytes. none: the light is encoded as it
+// is, clamped at 1 (lessons 05-10's way). after_resolve: lesson 09's tone
+// map (ACES) of the resolved light: the mean of the light, as a sensor
+// would take it. before_resolve: the tone map of each sample, then the
+// resolve: the mean of what the screen shows. They differ where a bright
+// surface meets a dark one: a sample worth 16 times white tone-maps to
+// about 1, so after_resolve lets one bright sample in four whiten the pixel.
+enum class ToneOrder { none, after_resolve, before_resolve };
+inline constexpr std::array<rl::Named<ToneOrder>, 3> kToneOrderNames = {
+    {{ToneOrder::none, "none"},
+     {ToneOrder::after_resolve, "after-resolve"},
+     {ToneOrder::before_resolve, "before-resolve"}}};
+inline constexpr std::array<ToneOrder, 3> kToneOrders = rl::values_of(kToneOrderNames);
+inline const char* name(ToneOrder value) {
+    return rl::name_in(kToneOrderNames, value);
+}
+
 struct AaOptions {
     Method method = Method::msaa;
     int samples = 4;
@@ -37,6 +55,8 @@ struct AaOptions {
     // msaa only. The centroid: the lab finds msaa 4 at the centroid as near
     // the truth at edges as 8 at the centre, in half the time.
     ShadeAt shade_at = ShadeAt::centroid;
+    ToneOrder tone = ToneOrder::none;
+    float exposure_stops = 0;  // the light times 2^stops before the tone map (or the clamp)
 };
 
 // The samples the options' method takes a pixel: 1 for none and post.
@@ -55,8 +75,9 @@ inline constexpr long long kMaxFrameSamples = 1LL << 26;
 void check_frame_size(int width, int height, int samples);
 
 struct Frame {
-    rl::Grid<rl::vec3> light;  // resolved, linear
-    rl::Image picture;         // the light in sRGB bytes
+    rl::Grid<rl::vec3>
+        light;          // resolved, exposed and tone-mapped if asked: linear, 0 to 1 as shown
+    rl::Image picture;  // the light in sRGB bytes
     perspective::PipelineCounts counts;
 };
 
@@ -76,6 +97,11 @@ SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models
 
 // The offsets the options ask for: {0, 0} for none and post.
 std::vector<rl::vec2> offsets_of(const AaOptions& options);
+
+// The light the picture shows, from a frame's samples: resolved, exposed,
+// and tone-mapped before or after the resolve as the options ask.
+rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
+                               const std::vector<rl::vec2>& offsets, const AaOptions& options);
 
 using shadows::load_scene;  // lesson 08's scene and camera
 

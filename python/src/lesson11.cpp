@@ -20,7 +20,8 @@ void bind_lesson11(py::module_ m) {
            Int<"width"> width, Int<"height"> height, const std::string& aa,
            std::optional<Int<"samples">> samples, const std::string& pattern,
            const std::string& resolve, std::optional<std::string> shade_at,
-           const std::string& normal_map, const std::string& tangents) {
+           const std::string& tone_map, Real<"exposure"> exposure, const std::string& normal_map,
+           const std::string& tangents) {
             check_size(width, height);
             antialiasing::AaOptions options;
             options.method = choice("--aa", aa, antialiasing::kMethods);
@@ -29,6 +30,8 @@ void bind_lesson11(py::module_ m) {
             options.resolve = choice("--resolve", resolve, antialiasing::kResolves);
             if (shade_at)
                 options.shade_at = choice("--shade-at", *shade_at, antialiasing::kShadeAts);
+            options.tone = choice("--tone-map", tone_map, antialiasing::kToneOrders);
+            options.exposure_stops = finite("--exposure", exposure, -16, 16);
             // As the program: options the method would ignore are refused.
             if (antialiasing::samples_of(options) == 1 && samples && *samples != 1)
                 throw std::invalid_argument("--samples: --aa " + aa + " takes one sample a pixel");
@@ -62,12 +65,15 @@ void bind_lesson11(py::module_ m) {
         py::arg("aa") = antialiasing::name(defaults.method), py::arg("samples") = py::none(),
         py::arg("pattern") = antialiasing::name(defaults.pattern),
         py::arg("resolve") = antialiasing::name(defaults.resolve), py::arg("shade_at") = py::none(),
-        py::arg("normal_map") = "tangent", py::arg("tangents") = "split",
+        py::arg("tone_map") = antialiasing::name(defaults.tone),
+        py::arg("exposure") = defaults.exposure_stops, py::arg("normal_map") = "tangent",
+        py::arg("tangents") = "split",
         "11_antialiasing: the floor, globe, crate and torus (or the models given, as stored) with "
         "several samples a pixel: aa='none', 'ssaa' (every sample shaded), 'msaa' (one shading "
         "a pixel, shade_at='centre' or 'centroid') or 'post' (one sample, then an edge filter); "
         "samples 2, 4, 8 or 16 as the pattern ('grid', 'rotated', 'standard') has them; "
-        "resolve='box' or 'tent', in linear light");
+        "resolve='box' or 'tent', in linear light; tone_map='after-resolve' or 'before-resolve' "
+        "(lesson 09's ACES) with exposure in stops");
 }
 
 }  // namespace py_rl

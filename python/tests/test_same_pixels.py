@@ -232,6 +232,11 @@ def test_lesson11(programs, aa):
          programs.image("11", "--aa", aa, *extra.get(aa, []), *SIZE))
 
 
+def test_lesson11_tone_map(programs):
+    same(rasterlab.lesson11.render(tone_map="before-resolve", exposure=3, **SMALL),
+         programs.image("11", "--tone-map", "before-resolve", "--exposure", 3, *SIZE))
+
+
 def test_lesson10_environment(programs):
     same(rasterlab.lesson10.render(environment="studio", **SMALL),
          programs.image("10", "--environment", "studio", *SIZE))

@@ -338,6 +338,26 @@ TEST(Resolve, AHalfCoveredPixelIsHalfTheLight) {
     EXPECT_EQ(light.get(2, 0).x, 1.0f);
 }
 
+// The tone map's order at a bright edge: a pixel half covered by light 16
+// times white (after the exposure) over black. Tone-mapped after the
+// resolve it is ACES(8), nearly white (0.97); tone-mapped per sample before
+// it, (ACES(16) + ACES(0)) / 2, about half (0.50): the bright side wins the
+// pixel only in the first.
+TEST(Resolve, TheToneMapsOrderDecidesABrightEdge) {
+    const std::vector<rl::vec2> offsets = sample_offsets(Pattern::grid, 4);
+    rl::Grid<rl::vec3> samples(4, 1, rl::vec3{0, 0, 0});
+    samples.at(0, 0) = samples.at(1, 0) = {16, 16, 16};
+    AaOptions after, before;
+    after.tone = ToneOrder::after_resolve, before.tone = ToneOrder::before_resolve;
+    const float a = shown_light(samples, offsets, after).get(0, 0).x,
+                b = shown_light(samples, offsets, before).get(0, 0).x;
+    environment::Exposure aces;
+    EXPECT_FLOAT_EQ(a, environment::tone_map(8.0f, aces));
+    EXPECT_FLOAT_EQ(b, environment::tone_map(16.0f, aces) / 2);
+    EXPECT_GT(a, 0.95f);
+    EXPECT_NEAR(b, 0.5f, 0.01f);
+}
+
 // The tent keeps a flat picture flat and spreads an edge over one more
 // pixel on each side than the box.
 TEST(Resolve, TheTentKeepsFlatLightAndWidensAnEdge) {
