@@ -78,13 +78,17 @@ int main(int argc, char** argv) {
         const std::chrono::duration<double, std::milli> ms =
             std::chrono::steady_clock::now() - start;
         rl::save_image(output, frame.picture);
+        // What the method used: a pattern and a resolve only with several samples.
+        const int n = antialiasing::samples_of(options);
+        const std::string sampling = n == 1
+                                         ? "one sample a pixel"
+                                         : std::to_string(n) + " samples a pixel (" +
+                                               antialiasing::name(options.pattern) + " pattern, " +
+                                               antialiasing::name(options.resolve) + " resolve)";
         std::printf(
-            "%zu models: %zu faces, %zu samples stored; %s, %d samples a pixel (%s pattern, %s "
-            "resolve) in a frame of %.1f ms; into %s\n",
+            "%zu models: %zu faces, %zu samples stored; %s, %s in a frame of %.1f ms; into %s\n",
             models.size(), frame.counts.faces, frame.counts.fragments,
-            antialiasing::name(options.method), antialiasing::samples_of(options),
-            antialiasing::name(options.pattern), antialiasing::name(options.resolve), ms.count(),
-            output.c_str());
+            antialiasing::name(options.method), sampling.c_str(), ms.count(), output.c_str());
         return 0;
     });
 }

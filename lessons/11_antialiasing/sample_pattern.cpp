@@ -73,8 +73,9 @@ std::vector<rl::vec2> sample_offsets(Pattern pattern, int samples) {
         case Pattern::grid:
             return grid(samples == 4 ? 2 : 4);
         case Pattern::rotated:
-            // The 2 x 2 grid turned by atan(1/2) = 26.6 degrees: its samples
-            // at 1/8 and 3/8 of a pixel from the centre on each axis.
+            // The 2 x 2 grid turned by atan(1/2) = 26.6 degrees and spread a
+            // little (0.40 from the centre, not 0.35), so that its samples
+            // lie at 1/8 and 3/8 of a pixel from the centre on each axis.
             return {{0.125f, 0.375f}, {-0.375f, 0.125f}, {-0.125f, -0.375f}, {0.375f, -0.125f}};
         case Pattern::standard:
             break;

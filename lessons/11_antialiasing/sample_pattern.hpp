@@ -20,7 +20,7 @@ namespace antialiasing {
 // row or a column (4 heights and 4 widths for 4 samples). standard:
 // Direct3D's standard multisample patterns for 1, 2, 4, 8 and 16 samples,
 // which GPUs share; like the rotated grid, each has as many distinct rows
-// and columns as samples (its 4 is the rotated grid itself).
+// and columns as samples (its 4 is the rotated grid's mirror image).
 enum class Pattern { grid, rotated, standard };
 inline constexpr std::array<rl::Named<Pattern>, 3> kPatternNames = {
     {{Pattern::grid, "grid"}, {Pattern::rotated, "rotated"}, {Pattern::standard, "standard"}}};
