@@ -46,6 +46,12 @@ int main(int argc, char** argv) {
                    "Stops: the light times 2^stops before the tone map or the clamp (-16 to 16)")
         ->capture_default_str()
         ->check(rl::finite_number(-16, 16));
+    double orbit_degrees = 0;
+    app.add_option("--orbit", orbit_degrees,
+                   "Turn the camera about the vertical through its target, degrees (-360 to 360): "
+                   "a frame of a slow orbit")
+        ->capture_default_str()
+        ->check(rl::finite_number(-360, 360));
     rl::add_method_option(app, "--normal-map", shadow.render.normal_map,
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
@@ -67,8 +73,9 @@ int main(int argc, char** argv) {
         antialiasing::check_frame_size(width, height, antialiasing::samples_of(options));
         shadows::set_lights(shadow, view, false);
         std::vector<std::string> warnings;
-        const auto [models, camera] =
+        const auto [models, framed] =
             antialiasing::load_scene(view, tangents, width, height, warnings);
+        const perspective::Camera camera = antialiasing::orbit(framed, orbit_degrees);
         rl::print_warnings("11_antialiasing", warnings);
         if (shadow.render.filter == textures::Filter::trilinear)
             normal_mapping::build_mip_levels(models);

@@ -104,6 +104,14 @@ rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
 }
 // [/doc:tone-order]
 
+perspective::Camera orbit(perspective::Camera c, double degrees) {
+    const double a = degrees * 3.14159265358979 / 180;
+    const rl::vec3 d = c.eye - c.target;
+    const float cs = static_cast<float>(std::cos(a)), sn = static_cast<float>(std::sin(a));
+    c.eye = c.target + rl::vec3{cs * d.x + sn * d.z, d.y, -sn * d.x + cs * d.z};
+    return c;
+}
+
 Frame render(const std::vector<normal_mapping::MappedModel>& models,
              const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
              const AaOptions& options, int width, int height) {

@@ -103,6 +103,10 @@ std::vector<rl::vec2> offsets_of(const AaOptions& options);
 rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
                                const std::vector<rl::vec2>& offsets, const AaOptions& options);
 
+// The camera turned about the vertical through its target by `degrees`
+// (a frame of a slow orbit: the lab's motion, the page's crawling edges).
+perspective::Camera orbit(perspective::Camera camera, double degrees);
+
 using shadows::load_scene;  // lesson 08's scene and camera
 
 }  // namespace antialiasing

@@ -53,15 +53,6 @@ void time_frame(benchmark::State& state, const Setup* s, const AaOptions* o) {
     }
 }
 
-// The camera turned about the vertical through its target by `degrees`.
-perspective::Camera orbit(perspective::Camera c, double degrees) {
-    const double a = degrees * 3.14159265358979 / 180;
-    const rl::vec3 d = c.eye - c.target;
-    const float cs = static_cast<float>(std::cos(a)), sn = static_cast<float>(std::sin(a));
-    c.eye = c.target + rl::vec3{cs * d.x + sn * d.z, d.y, -sn * d.x + cs * d.z};
-    return c;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
