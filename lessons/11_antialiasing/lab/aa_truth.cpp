@@ -12,7 +12,7 @@ namespace antialiasing {
 rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& models,
                                const perspective::Camera& camera,
                                const shadows::ShadowOptions& shadow, int width, int height,
-                               int side) {
+                               int side, const AaOptions& tone) {
     if (side < 4 || side % 4 != 0)
         throw std::invalid_argument("the truth's grid side must be a multiple of 4");
     // The fine grid's offsets, cut into 4 x 4 blocks: one frame each.
@@ -28,7 +28,13 @@ rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& m
                                        (static_cast<float>(bj * 4 + j) + 0.5f) * step - 0.5f});
             const SampleTarget frame = draw_samples(models, camera, shadow, Method::ssaa, offsets,
                                                     ShadeAt::centre, width, height);
-            const rl::Grid<rl::vec3> light = perspective::resolve(frame.colour(), 16);
+            // Per sample (tone map before the mean) or linear (after it).
+            AaOptions per_frame;
+            per_frame.tone = tone.tone == ToneOrder::before_resolve ? ToneOrder::before_resolve
+                                                                    : ToneOrder::none;
+            per_frame.exposure_stops =
+                tone.tone == ToneOrder::before_resolve ? tone.exposure_stops : 0;
+            const rl::Grid<rl::vec3> light = shown_light(frame.colour(), offsets, per_frame);
             for (int y = 0; y < height; ++y)
                 for (int x = 0; x < width; ++x) {
                     const rl::vec3 c = light.get(x, y);
@@ -38,13 +44,17 @@ rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& m
         }
     rl::Grid<rl::vec3> out(width, height);
     const double frames = blocks * blocks;
+    // The mean's own exposure and tone map, when they come after it.
+    AaOptions after;
+    after.tone = tone.tone == ToneOrder::before_resolve ? ToneOrder::none : tone.tone;
+    after.exposure_stops = tone.tone == ToneOrder::before_resolve ? 0 : tone.exposure_stops;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const double* s = &sum[(static_cast<std::size_t>(y) * width + x) * 3];
             out.at(x, y) = {static_cast<float>(s[0] / frames), static_cast<float>(s[1] / frames),
                             static_cast<float>(s[2] / frames)};
         }
-    return out;
+    return shown_light(out, {{0, 0}}, after);
 }
 // [/doc:truth]
 

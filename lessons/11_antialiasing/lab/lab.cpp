@@ -8,8 +8,10 @@
 // Writes 11_methods.csv.
 #include <benchmark/benchmark.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include "05_perspective/view_options.hpp"
@@ -36,10 +38,12 @@ std::string variant(const AaOptions& o) {
     if (o.resolve != Resolve::box) v += ", " + std::string(name(o.resolve));
     if (o.method == Method::msaa && o.shade_at != ShadeAt::centre)
         v += ", " + std::string(name(o.shade_at));
+    if (o.tone != ToneOrder::none) v += ", +3 stops, tone map " + std::string(name(o.tone));
     return v;
 }
 
 std::string label(const AaOptions& o) {
+    if (o.tone != ToneOrder::none) return variant(o) + " " + std::to_string(o.samples);
     if (samples_of(o) == 1) return name(o.method);
     return std::string(name(o.method)) + " " + std::to_string(o.samples) + " " + name(o.pattern) +
            " " + name(o.resolve) +
@@ -86,47 +90,63 @@ int main(int argc, char** argv) {
         add(Method::msaa, 4, Pattern::standard, Resolve::tent);
         add(Method::msaa, 8, Pattern::standard, Resolve::tent);
         cases.push_back({.method = Method::post, .samples = 1});
-        if (options.quick) cases = {cases[0], cases[1], cases[6], cases.back()};
+        // HDR: 3 stops brighter, lesson 09's tone map after the resolve or
+        // on each sample before it, each scored against the truth of its order.
+        for (ToneOrder order : {ToneOrder::after_resolve, ToneOrder::before_resolve})
+            for (const auto& [m, n, p] : {std::tuple{Method::msaa, 4, Pattern::standard},
+                                          std::tuple{Method::ssaa, 16, Pattern::grid}}) {
+                AaOptions o{m, n, p, Resolve::box, ShadeAt::centroid, order, 3};
+                cases.push_back(o);
+            }
+        if (options.quick) cases = {cases[0], cases[1], cases[6], cases[12], cases[13]};
 
         for (const AaOptions& o : cases)
             benchmark::RegisterBenchmark(("frame/" + label(o)).c_str(), time_frame, &setup, &o)
                 ->Unit(benchmark::kMillisecond);
         const auto timings = rl::lab::run_benchmarks();
 
-        // Still: one frame at the default view.
-        const auto start = std::chrono::steady_clock::now();
-        const rl::Grid<rl::vec3> truth =
-            truth_light(models, camera, shadow, size, size, truth_side);
-        const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
-        std::printf("truth: %d samples a pixel at %dx%d in %.1f s\n", truth_side * truth_side, size,
-                    size, took.count());
+        // The truths, still and moving, one per tone order (the method is
+        // scored against the truth of its own order): found when first asked.
+        const int frames = options.quick ? 2 : 6;  // of the orbit, a quarter degree apart
+        std::map<ToneOrder, rl::Grid<rl::vec3>> truths;
+        std::map<ToneOrder, std::vector<rl::Grid<rl::vec3>>> moving_truths;
+        const auto truth_for = [&](const AaOptions& o) -> const rl::Grid<rl::vec3>& {
+            if (!truths.count(o.tone)) {
+                const auto start = std::chrono::steady_clock::now();
+                truths.emplace(o.tone,
+                               truth_light(models, camera, shadow, size, size, truth_side, o));
+                const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+                std::printf("truth (tone map %s): %d samples a pixel at %dx%d in %.1f s\n",
+                            name(o.tone), truth_side * truth_side, size, size, took.count());
+                for (int k = 0; k < frames; ++k)
+                    moving_truths[o.tone].push_back(truth_light(models, orbit(camera, 0.25 * k),
+                                                                shadow, motion_size, motion_size,
+                                                                options.quick ? 4 : 8, o));
+            }
+            return truths.at(o.tone);
+        };
         const rl::Grid<std::uint8_t> edges = depth_edges(models, camera, shadow, size, size);
-
-        // Motion: a slow orbit, a quarter of a degree a frame, at a smaller size.
-        const int frames = options.quick ? 2 : 6;
-        std::vector<rl::Grid<rl::vec3>> truths;
         std::vector<rl::Grid<std::uint8_t>> moving_edges;
-        for (int k = 0; k < frames; ++k) {
-            const perspective::Camera c = orbit(camera, 0.25 * k);
-            truths.push_back(
-                truth_light(models, c, shadow, motion_size, motion_size, options.quick ? 4 : 8));
-            moving_edges.push_back(depth_edges(models, c, shadow, motion_size, motion_size));
-        }
+        for (int k = 0; k < frames; ++k)
+            moving_edges.push_back(
+                depth_edges(models, orbit(camera, 0.25 * k), shadow, motion_size, motion_size));
 
         rl::ResultsTable table({"variant", "method", "samples", "pattern", "resolve", "shade_at",
-                                "ms_per_frame", "ms_min", "ms_max", "bytes_per_pixel", "edge_error",
-                                "shading_error", "p95_error", "flicker", "edge_pixels"});
+                                "tone_map", "ms_per_frame", "ms_min", "ms_max", "bytes_per_pixel",
+                                "edge_error", "shading_error", "p95_error", "flicker",
+                                "edge_pixels"});
         for (const AaOptions& o : cases) {
             const Frame f = render(models, camera, shadow, o, size, size);
-            const AaError e = compare(truth, f.light, edges);
+            const AaError e = compare(truth_for(o), f.light, edges);
+            const std::vector<rl::Grid<rl::vec3>>& truths_moving = moving_truths.at(o.tone);
             double moving = 0;
             rl::Grid<rl::vec3> before;
             for (int k = 0; k < frames; ++k) {
                 const Frame m =
                     render(models, orbit(camera, 0.25 * k), shadow, o, motion_size, motion_size);
                 if (k > 0)
-                    moving += flicker(truths[static_cast<std::size_t>(k - 1)],
-                                      truths[static_cast<std::size_t>(k)], before, m.light,
+                    moving += flicker(truths_moving[static_cast<std::size_t>(k - 1)],
+                                      truths_moving[static_cast<std::size_t>(k)], before, m.light,
                                       moving_edges[static_cast<std::size_t>(k - 1)],
                                       moving_edges[static_cast<std::size_t>(k)]);
                 before = m.light;
@@ -137,9 +157,9 @@ int main(int argc, char** argv) {
                            std::string(n == 1 ? "centre" : name(o.pattern)),
                            std::string(name(o.resolve)),
                            std::string(o.method == Method::msaa ? name(o.shade_at) : "sample"),
-                           t.median_ns / 1e6, t.min_ns / 1e6, t.max_ns / 1e6,
-                           static_cast<long long>(16 * n), e.edges, e.shading, e.p95,
-                           moving / (frames - 1), static_cast<long long>(e.edge_pixels)});
+                           std::string(name(o.tone)), t.median_ns / 1e6, t.min_ns / 1e6,
+                           t.max_ns / 1e6, static_cast<long long>(16 * n), e.edges, e.shading,
+                           e.p95, moving / (frames - 1), static_cast<long long>(e.edge_pixels)});
         }
         table.write_csv(options.out_dir / "11_methods.csv");
         std::printf("wrote 11_methods.csv to %s\n", options.out_dir.string().c_str());
