@@ -46,6 +46,9 @@ int main(int argc, char** argv) {
                    "Stops: the light times 2^stops before the tone map or the clamp (-16 to 16)")
         ->capture_default_str()
         ->check(rl::finite_number(-16, 16));
+    app.add_flag("--resolve-encoded", options.resolve_encoded,
+                 "The pitfall: average the samples' sRGB-encoded values instead of their light "
+                 "(with --tone-map none)");
     double orbit_degrees = 0;
     app.add_option("--orbit", orbit_degrees,
                    "Turn the camera about the vertical through its target, degrees (-360 to 360): "
@@ -69,6 +72,9 @@ int main(int argc, char** argv) {
                                         " takes one sample a pixel");
         if (options.method != antialiasing::Method::msaa && shade_at->count() > 0)
             throw std::invalid_argument("--shade-at: only --aa msaa shades once a pixel");
+        if (options.resolve_encoded && options.tone != antialiasing::ToneOrder::none)
+            throw std::invalid_argument(
+                "--resolve-encoded: the encoded resolve is shown without a tone map");
         antialiasing::check(options);
         antialiasing::check_frame_size(width, height, antialiasing::samples_of(options));
         shadows::set_lights(shadow, view, false);

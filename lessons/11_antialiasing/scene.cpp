@@ -1,5 +1,6 @@
 #include "scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -100,6 +101,22 @@ rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
             break;
     }
     const float scale = std::exp2(options.exposure_stops);
+    if (options.resolve_encoded) {
+        // Encoded, averaged, decoded: the light the averaged bytes stand for.
+        const auto encode = [](float v) {
+            return shading::linear_to_srgb(std::clamp(v, 0.0f, 1.0f));
+        };
+        const rl::Grid<rl::vec3> mean = resolve(
+            each(samples,
+                 [&](rl::vec3 c) {
+                     return rl::vec3{encode(c.x * scale), encode(c.y * scale), encode(c.z * scale)};
+                 }),
+            offsets, options.resolve);
+        return each(mean, [](rl::vec3 c) {
+            return rl::vec3{shading::srgb_to_linear(c.x), shading::srgb_to_linear(c.y),
+                            shading::srgb_to_linear(c.z)};
+        });
+    }
     return each(resolve(samples, offsets, options.resolve), [&](rl::vec3 c) { return c * scale; });
 }
 // [/doc:tone-order]

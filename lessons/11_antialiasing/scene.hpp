@@ -57,6 +57,9 @@ struct AaOptions {
     ShadeAt shade_at = ShadeAt::centroid;
     ToneOrder tone = ToneOrder::none;
     float exposure_stops = 0;  // the light times 2^stops before the tone map (or the clamp)
+    // The pitfall, to be seen: average the samples as sRGB-encoded values
+    // (what averaging the bytes of an 8-bit target does) instead of light.
+    bool resolve_encoded = false;
 };
 
 // The samples the options' method takes a pixel: 1 for none and post.

@@ -334,6 +334,10 @@ TEST(Resolve, AHalfCoveredPixelIsHalfTheLight) {
     const rl::Grid<rl::vec3> light = resolve(t.colour(), offsets, Resolve::box);
     EXPECT_FLOAT_EQ(light.get(1, 0).x, 0.5f);
     EXPECT_EQ(encoded(light).at(1, 0).r, 188);
+    // The pitfall, as --resolve-encoded shows it: the bytes' mean, 127.5.
+    AaOptions pitfall;
+    pitfall.resolve_encoded = true;
+    EXPECT_NEAR(encoded(shown_light(t.colour(), offsets, pitfall)).at(1, 0).r, 127.5, 0.5);
     EXPECT_EQ(light.get(0, 0).x, 0.0f);
     EXPECT_EQ(light.get(2, 0).x, 1.0f);
 }
