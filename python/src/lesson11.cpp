@@ -20,8 +20,8 @@ void bind_lesson11(py::module_ m) {
            Int<"width"> width, Int<"height"> height, const std::string& aa,
            std::optional<Int<"samples">> samples, const std::string& pattern,
            const std::string& resolve, std::optional<std::string> shade_at,
-           const std::string& tone_map, Real<"exposure"> exposure, const std::string& normal_map,
-           const std::string& tangents) {
+           const std::string& tone_map, Real<"exposure"> exposure, bool resolve_encoded,
+           Real<"orbit"> orbit, const std::string& normal_map, const std::string& tangents) {
             check_size(width, height);
             antialiasing::AaOptions options;
             options.method = choice("--aa", aa, antialiasing::kMethods);
@@ -32,6 +32,11 @@ void bind_lesson11(py::module_ m) {
                 options.shade_at = choice("--shade-at", *shade_at, antialiasing::kShadeAts);
             options.tone = choice("--tone-map", tone_map, antialiasing::kToneOrders);
             options.exposure_stops = finite("--exposure", exposure, -16, 16);
+            options.resolve_encoded = resolve_encoded;
+            if (resolve_encoded && options.tone != antialiasing::ToneOrder::none)
+                throw std::invalid_argument(
+                    "--resolve-encoded: the encoded resolve is shown without a tone map");
+            const double orbit_degrees = finite("--orbit", orbit, -360, 360);
             // As the program: options the method would ignore are refused.
             if (antialiasing::samples_of(options) == 1 && samples && *samples != 1)
                 throw std::invalid_argument("--samples: --aa " + aa + " takes one sample a pixel");
@@ -52,7 +57,8 @@ void bind_lesson11(py::module_ m) {
                 normal_mapping::build_mip_levels(scene.models);
             check_signals();
             const antialiasing::Frame frame =
-                antialiasing::render(scene.models, scene.camera, shadow, options, width, height);
+                antialiasing::render(scene.models, antialiasing::orbit(scene.camera, orbit_degrees),
+                                     shadow, options, width, height);
             r.colour = frame.picture;
             r.count("faces", frame.counts.faces);
             r.count("samples_stored", frame.counts.fragments);
@@ -66,8 +72,8 @@ void bind_lesson11(py::module_ m) {
         py::arg("pattern") = antialiasing::name(defaults.pattern),
         py::arg("resolve") = antialiasing::name(defaults.resolve), py::arg("shade_at") = py::none(),
         py::arg("tone_map") = antialiasing::name(defaults.tone),
-        py::arg("exposure") = defaults.exposure_stops, py::arg("normal_map") = "tangent",
-        py::arg("tangents") = "split",
+        py::arg("exposure") = defaults.exposure_stops, py::arg("resolve_encoded") = false,
+        py::arg("orbit") = 0.0, py::arg("normal_map") = "tangent", py::arg("tangents") = "split",
         "11_antialiasing: the floor, globe, crate and torus (or the models given, as stored) with "
         "several samples a pixel: aa='none', 'ssaa' (every sample shaded), 'msaa' (one shading "
         "a pixel, shade_at='centre' or 'centroid') or 'post' (one sample, then an edge filter); "

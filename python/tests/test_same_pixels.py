@@ -232,6 +232,11 @@ def test_lesson11(programs, aa):
          programs.image("11", "--aa", aa, *extra.get(aa, []), *SIZE))
 
 
+def test_lesson11_orbit_and_the_encoded_resolve(programs):
+    same(rasterlab.lesson11.render(orbit=0.5, resolve_encoded=True, **SMALL),
+         programs.image("11", "--orbit", 0.5, "--resolve-encoded", *SIZE))
+
+
 def test_lesson11_tone_map(programs):
     same(rasterlab.lesson11.render(tone_map="before-resolve", exposure=3, **SMALL),
          programs.image("11", "--tone-map", "before-resolve", "--exposure", 3, *SIZE))
