@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything with clang (the `fuzz` preset), the libFuzzer targets
 # included, and runs each target for a bounded time on its seed corpus:
-# scripts/fuzz.sh [seconds per target] (default 60). New inputs go to
+# scripts/fuzz.sh [seconds per target] [seconds per lesson's command line]
+# (default 60, and the first number). New inputs go to
 # build-fuzz/corpus/, never into the committed seeds. Any crash, leak,
 # sanitizer report or unexpected exception fails the run and leaves the input
 # as build-fuzz/findings/<target>/crash-*; make it a regression test and a
@@ -11,15 +12,16 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
+cli_seconds="${2:-$seconds}"
 seed="${FUZZ_SEED:-1}"
 
 scripts/setup.sh fuzz
 cmake --preset fuzz
 cmake --build --preset fuzz
 
-run_target() {  # run_target <binary> <seed folder> <max input bytes> [libFuzzer options...]
-    local target="$1" seeds="$2" max_len="$3"
-    shift 3
+run_target() {  # run_target <seconds> <binary> <seed folder> <max input bytes> [libFuzzer options...]
+    local seconds="$1" target="$2" seeds="$3" max_len="$4"
+    shift 4
     local name
     name="$(basename "$target")"
     mkdir -p "build-fuzz/corpus/$name" "build-fuzz/findings/$name"
@@ -49,14 +51,14 @@ start() {  # start <run_target arguments...>: in the background, at most jobs_at
         running=$((running - 1))
     fi
 }
-start build-fuzz/tests/fuzz/fuzz_tga tests/fuzz/corpus/tga 65536
-start build-fuzz/tests/fuzz/fuzz_obj tests/fuzz/corpus/obj 16384
-start build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture 65536
-start build-fuzz/tests/fuzz/fuzz_clipper tests/fuzz/corpus/clipper 48
+start "$seconds" build-fuzz/tests/fuzz/fuzz_tga tests/fuzz/corpus/tga 65536
+start "$seconds" build-fuzz/tests/fuzz/fuzz_obj tests/fuzz/corpus/obj 16384
+start "$seconds" build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture 65536
+start "$seconds" build-fuzz/tests/fuzz/fuzz_clipper tests/fuzz/corpus/clipper 48
 for cli in build-fuzz/tests/fuzz/fuzz_cli_*; do
     # The lessons print a line per run and an error per refused option: keep
     # stdout closed (-close_fd_mask=1); libFuzzer's own report goes to stderr.
-    start "$cli" tests/fuzz/corpus/cli 512 -close_fd_mask=1
+    start "$cli_seconds" "$cli" tests/fuzz/corpus/cli 512 -close_fd_mask=1
 done
 while [ "$running" -gt 0 ]; do
     wait -n || status=1

@@ -3,8 +3,8 @@
 // the size and output options are replaced by a small image written to a
 // scratch folder, so that every run stays fast. The program must return
 // normally (success or a refused input), never crash or trip a sanitizer.
-// One binary per lesson: its main.cpp is compiled with main renamed to
-// lesson_main (see CMakeLists.txt).
+// One binary per lesson: it links the lesson's objects, its main.cpp compiled
+// with main renamed to lesson_main (rasterlab_lesson() in lessons/CMakeLists.txt).
 // Run: build-fuzz/tests/fuzz/fuzz_cli_02_triangles tests/fuzz/corpus/cli
 #include <unistd.h>
 
