@@ -204,6 +204,17 @@ Renderer::Renderer(const std::vector<normal_mapping::MappedModel>& models, int w
 
 Renderer::~Renderer() = default;
 
+void Renderer::set_lighting(const shading::Lighting<float>& lighting) {
+    Impl& s = *impl_;
+    if (lighting.lights.size() > static_cast<std::size_t>(kMaxLights))
+        throw std::invalid_argument("the fast path takes at most 8 lights");
+    s.options.render.lighting = lighting;
+    for (std::size_t m = 0; m < s.models.size(); ++m) {
+        if (s.placed[m]) s.placed[m]->uniforms.lighting = lighting;
+        s.materials[m] = s.material_for(s.models[m], s.placed[m]);
+    }
+}
+
 int Renderer::threads() const {
     return impl_->workers.threads();
 }

@@ -79,6 +79,9 @@ class Renderer {
              const FastOptions& options);
     ~Renderer();
     FrameCounts render(const perspective::Camera& camera);
+    // New lights for the frames to come (at most 8), without rebuilding the
+    // models: the viewer's light moves with a key or a drag.
+    void set_lighting(const shading::Lighting<float>& lighting);
     const rl::Image& frame() const { return frame_; }
     const StageTimes& times() const { return times_; }
     int threads() const;

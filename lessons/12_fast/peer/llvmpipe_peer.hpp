@@ -9,36 +9,32 @@
 //   peer.upload(models, options);           // outside the timed loop
 //   const double ms = peer.render(camera);  // one frame, glFinish included
 //   const rl::Image picture = peer.frame();
+//
+// The lab links it; lesson 12's program loads it from a module when it runs
+// the peer (peer.hpp, peer_module.cpp).
 #pragma once
 
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "07_normal_mapping/scene.hpp"
+#include "peer.hpp"
 
 namespace fast {
 
-// Thrown when no OpenGL 3.3 context can be made (the program then says the
-// peer is skipped).
-struct PeerUnavailable : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-class LlvmpipePeer {
+class LlvmpipePeer : public Peer {
   public:
     LlvmpipePeer(int width, int height, int threads);
-    ~LlvmpipePeer();
+    ~LlvmpipePeer() override;
     LlvmpipePeer(const LlvmpipePeer&) = delete;
     LlvmpipePeer& operator=(const LlvmpipePeer&) = delete;
 
     void upload(const std::vector<normal_mapping::MappedModel>& models,
-                const normal_mapping::RenderOptions& options);
+                const normal_mapping::RenderOptions& options) override;
     // Draws one frame and waits for it (glFinish); returns its milliseconds.
-    double render(const perspective::Camera& camera);
-    rl::Image frame() const;      // the last frame, bottom row first
-    std::string version() const;  // GL_VERSION and GL_RENDERER
+    double render(const perspective::Camera& camera) override;
+    rl::Image frame() const override;      // the last frame, bottom row first
+    std::string version() const override;  // GL_VERSION and GL_RENDERER
 
   private:
     struct Impl;
