@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "05_perspective/view_options.hpp"
@@ -30,9 +31,14 @@ constexpr KeyName kKeys[] = {
     {'+', '\0', Key::finer, "+: a finer framebuffer (up to the window's size)"},
     {'-', '\0', Key::coarser, "-: a coarser framebuffer (1/2, then 1/4 of the window)"},
     {'r', 'r', Key::reset, "R: the first view and settings again"},
+    {'j', 'j', Key::light_left, "J: turn the light left about the vertical"},
+    {'l', 'l', Key::light_right, "L: turn the light right about the vertical"},
+    {'i', 'i', Key::light_up, "I: raise the light"},
+    {'k', 'k', Key::light_down, "K: lower the light"},
 };
 
 constexpr float kTurnDegrees = 5, kMoveFactor = 0.9f, kDegreesPerPixel = 0.4f;
+constexpr float kLightTurnDegrees = 15, kLightRaiseDegrees = 5;
 constexpr float kMostPitch = 85;  // short of the poles, where up and the view align
 
 template <class E, std::size_t N>
@@ -58,7 +64,7 @@ std::optional<Key> key_named(char c) {
 std::string key_help() {
     std::string text = "Keys (and, in a --keys script, the character in brackets):\n";
     for (const KeyName& k : kKeys) text += std::string("  [") + k.name + "] " + k.what + "\n";
-    text += "  mouse drag: orbit; wheel: zoom; Esc or Q: quit\n";
+    text += "  mouse drag: orbit; right-button drag: move the light; wheel: zoom; Esc or Q: quit\n";
     return text;
 }
 
@@ -108,7 +114,37 @@ void apply(Key key, Settings& s, Orbit& orbit, const Settings& first, const Orbi
             s = first;
             orbit = first_orbit;
             break;
+        case Key::light_left:
+            s.light = turned_light(s.light, -kLightTurnDegrees, 0);
+            break;
+        case Key::light_right:
+            s.light = turned_light(s.light, kLightTurnDegrees, 0);
+            break;
+        case Key::light_up:
+            s.light = turned_light(s.light, 0, kLightRaiseDegrees);
+            break;
+        case Key::light_down:
+            s.light = turned_light(s.light, 0, -kLightRaiseDegrees);
+            break;
     }
+}
+
+void drag_light(Settings& s, int dx, int dy) {
+    if (dx == 0 && dy == 0) return;  // a still light stays the --light direction to the bit
+    // Dragging up raises the light.
+    s.light = turned_light(s.light, kDegreesPerPixel * static_cast<float>(dx),
+                           -kDegreesPerPixel * static_cast<float>(dy));
+}
+
+rl::vec3 turned_light(rl::vec3 light, float yaw, float raise) {
+    constexpr float radians = std::numbers::pi_v<float> / 180;
+    const rl::vec3 d = rl::normalize(light);
+    // Azimuth about y from +z towards +x, elevation above the floor's plane.
+    const float azimuth = std::atan2(d.x, d.z) + yaw * radians;
+    const float elevation = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)) + raise * radians,
+                                       -kMostPitch * radians, kMostPitch * radians);
+    return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+            std::cos(elevation) * std::cos(azimuth)};
 }
 
 void drag(Orbit& orbit, int dx, int dy) {
@@ -180,6 +216,11 @@ std::string describe(const Settings& s) {
                        ", " + textures::name(s.filter) + " filter, " +
                        normal_mapping::name(s.normal_map) + " normal map, wireframe " +
                        (s.wireframe ? "on" : "off") + ", scale 1/" + std::to_string(s.scale);
+    const rl::vec3 light = rl::normalize(s.light);
+    char towards[64];
+    std::snprintf(towards, sizeof towards, ", light towards (%.2f, %.2f, %.2f)", light.x, light.y,
+                  light.z);
+    text += towards;
     return text;
 }
 

@@ -38,6 +38,9 @@ struct Settings {
     normal_mapping::NormalMap normal_map = normal_mapping::NormalMap::tangent;
     bool wireframe = false;
     int scale = 1;  // the framebuffer is the window's size divided by this (1, 2 or 4)
+    // Towards the light, in world space: --light at first, then as J, L, I,
+    // K and a right-button drag turn it.
+    rl::vec3 light{0.3f, 0.5f, 1.0f};
     friend bool operator==(const Settings&, const Settings&) = default;
 };
 
@@ -65,6 +68,10 @@ enum class Key {
     finer,
     coarser,  // + and -: the framebuffer's scale, 1, 1/2, 1/4 of the window
     reset,    // R: the first view and settings again (those the command line gave)
+    light_left,
+    light_right,  // J and L: turn the light about the vertical
+    light_up,
+    light_down,  // I and K: raise or lower the light
 };
 
 // The key named by one character of the --keys script and of --help's list
@@ -87,6 +94,15 @@ void apply(Key key, Settings& settings, Orbit& orbit, const Settings& first,
 // factor per wheel step.
 void drag(Orbit& orbit, int dx, int dy);
 void zoom(Orbit& orbit, int steps);
+
+// A drag with the right button moves the light: across turns it about the
+// vertical, up and down raises and lowers it.
+void drag_light(Settings& settings, int dx, int dy);
+
+// `light` turned `yaw` degrees about the vertical (world y) and raised
+// `raise` degrees, its elevation kept within 85 degrees of the horizon; a
+// unit vector.
+rl::vec3 turned_light(rl::vec3 light, float yaw, float raise);
 
 // The orbit of a camera about its target, measured about its own up axis:
 // yaw 0 where it stands.

@@ -18,11 +18,21 @@ FrameRenderer::FrameRenderer(const std::vector<normal_mapping::MappedModel>& mod
     for (const normal_mapping::MappedModel& m : models) faces_ += m.lit.model.mesh.faces.size();
 }
 
+bool FrameRenderer::light_moved(const Settings& s) const {
+    return !(s.light == perspective::light_direction(request_.view));
+}
+
 normal_mapping::RenderOptions FrameRenderer::options_for(const Settings& s) const {
     normal_mapping::RenderOptions options = request_.options;
     options.specular = s.specular;
     options.filter = s.filter;
     options.normal_map = s.normal_map;
+    // The lights as lesson 07's load_scene() makes them, from the moved
+    // light (until it moves: --light's, exactly as loaded).
+    if (light_moved(s)) {
+        options.lighting = shading::default_lighting(s.light);
+        if (request_.one_light) options.lighting.lights.resize(1);
+    }
     return options;
 }
 
@@ -31,14 +41,21 @@ const rl::Image& FrameRenderer::render(const Settings& settings, const perspecti
     stats_ = {faces_, 0};
     const normal_mapping::RenderOptions options = options_for(settings);
     if (settings.path == Path::fast) {
-        Settings shading = settings;  // what a rebuild depends on: not the path, wire or scale
+        // What a rebuild depends on: not the path, the wire, the scale or the
+        // light (the renderer takes new lights as they are).
+        Settings shading = settings;
         shading.path = Path::fast, shading.wireframe = false, shading.scale = 1;
+        shading.light = fast_settings_.light;
         if (!fast_ || !(shading == fast_settings_) || width != fast_width_ ||
             height != fast_height_) {
             fast::FastOptions o;
             o.render = options;
             fast_ = std::make_unique<fast::Renderer>(models_, width, height, o);
-            fast_settings_ = shading, fast_width_ = width, fast_height_ = height;
+            fast_settings_ = shading, fast_settings_.light = settings.light;
+            fast_width_ = width, fast_height_ = height;
+        } else if (!(settings.light == fast_settings_.light)) {
+            fast_->set_lighting(options.lighting);
+            fast_settings_.light = settings.light;
         }
         stats_.pixels_shaded = fast_->render(camera).tiles.shaded;
         frame_ = &fast_->frame();
@@ -51,6 +68,10 @@ const rl::Image& FrameRenderer::render(const Settings& settings, const perspecti
             shadows::ShadowOptions shadowed;
             shadowed.render = options;  // then its lights from lesson 08's key light
             shadows::set_lights(shadowed, request_.view, request_.one_light);
+            if (light_moved(settings)) {
+                shadowed.light.direction = rl::normalize(settings.light);
+                shadowed.render.lighting = options.lighting;
+            }
             const float aspect = static_cast<float>(width) / static_cast<float>(height);
             const shadows::ShadowMap map =
                 shadows::shadow_map_for(models_, camera, aspect, shadowed);

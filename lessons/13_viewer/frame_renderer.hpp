@@ -1,8 +1,8 @@
 // What the viewer shows each frame: the scene drawn by the renderer the
 // settings name (lesson 12's fast path, lesson 07's or lesson 08's), at the
-// framebuffer's size, with the wireframe over it if asked. The fast
-// renderer is kept between frames and built again only when the size or a
-// shading option changes.
+// framebuffer's size, with the wireframe over it if asked, lit from the
+// settings' light. The fast renderer is kept between frames and built again
+// only when the size or a shading option changes (a moved light is not one).
 //
 //   viewer::FrameRenderer renderer(scene.models, request);
 //   const rl::Image& frame = renderer.render(settings, camera, 800, 600);
@@ -35,6 +35,7 @@ class FrameRenderer {
 
   private:
     normal_mapping::RenderOptions options_for(const Settings& settings) const;
+    bool light_moved(const Settings& settings) const;  // from --light's direction
 
     const std::vector<normal_mapping::MappedModel>& models_;
     normal_mapping::MappedView request_;

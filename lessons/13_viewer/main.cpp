@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "07_normal_mapping/mapped_cli.hpp"
+#include "08_shadows/scene.hpp"
 #include "12_fast/orbit.hpp"
 #include "controls.hpp"
 #include "frame_renderer.hpp"
@@ -26,6 +27,10 @@ int main(int argc, char** argv) {
     rl::ImageOptions window{"", 800, 800};
     normal_mapping::MappedCli cli;
     cli.every_normal_map = true;  // the N key switches between them
+    // Lesson 08's light, from the side and above: the S key's shadows fall
+    // where the default camera sees them (lesson 07's, from the camera's
+    // side, hid them behind the models).
+    cli.view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
     normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
     // A window no display shows whole costs memory and time for nothing:
     // 8192 a side is past the largest displays (8K is 7680 x 4320).
@@ -85,6 +90,7 @@ int main(int argc, char** argv) {
         settings.specular = cli.options.specular;
         settings.filter = cli.options.filter;
         settings.normal_map = cli.options.normal_map;
+        settings.light = perspective::light_direction(cli.view);
         viewer::Orbit orbit = viewer::orbit_of(scene.camera);
         const viewer::Orbit first_orbit = orbit;
         const viewer::Settings first_settings = settings;
@@ -105,6 +111,7 @@ int main(int argc, char** argv) {
             for (viewer::Key key : input.keys)
                 viewer::apply(key, settings, orbit, first_settings, first_orbit);
             viewer::drag(orbit, input.drag_x, input.drag_y);
+            viewer::drag_light(settings, input.light_x, input.light_y);
             viewer::zoom(orbit, input.wheel);
             const int w = std::max(1, sdl.width() / settings.scale);
             const int h = std::max(1, sdl.height() / settings.scale);

@@ -122,6 +122,9 @@ Input SdlWindow::poll() {
                 if (e.motion.state & SDL_BUTTON_LMASK) {
                     input.drag_x += e.motion.xrel;
                     input.drag_y += e.motion.yrel;
+                } else if (e.motion.state & SDL_BUTTON_RMASK) {
+                    input.light_x += e.motion.xrel;
+                    input.light_y += e.motion.yrel;
                 }
                 break;
             case SDL_MOUSEWHEEL:

@@ -24,8 +24,9 @@ namespace viewer {
 struct Input {
     bool quit = false;
     std::vector<Key> keys;
-    int drag_x = 0, drag_y = 0;  // pixels dragged with the left button
-    int wheel = 0;               // steps, towards the screen positive
+    int drag_x = 0, drag_y = 0;    // pixels dragged with the left button
+    int light_x = 0, light_y = 0;  // and with the right button (the light)
+    int wheel = 0;                 // steps, towards the screen positive
 };
 
 class SdlWindow {

@@ -50,8 +50,48 @@ TEST(Keys, EachKeyChangesWhatItSays) {
     EXPECT_EQ(o.distance, first_orbit.distance);
 }
 
+// Azimuth about y from +z towards +x, and elevation, in degrees.
+float azimuth_of(rl::vec3 d) {
+    return std::atan2(d.x, d.z) * 180 / 3.14159265f;
+}
+float elevation_of(rl::vec3 d) {
+    return std::asin(rl::normalize(d).y) * 180 / 3.14159265f;
+}
+
+TEST(Keys, TheLightKeysTurnAndRaiseTheLight) {
+    viewer::Settings first;
+    first.light = {1, 1, 0};  // azimuth 90, elevation 45
+    const viewer::Orbit first_orbit;
+    viewer::Settings s = first;
+    viewer::Orbit o = first_orbit;
+    viewer::apply(Key::light_right, s, o, first, first_orbit);
+    EXPECT_NEAR(azimuth_of(s.light), 105, 1e-3f);
+    EXPECT_NEAR(elevation_of(s.light), 45, 1e-3f);
+    viewer::apply(Key::light_left, s, o, first, first_orbit);
+    viewer::apply(Key::light_left, s, o, first, first_orbit);
+    EXPECT_NEAR(azimuth_of(s.light), 75, 1e-3f);
+    viewer::apply(Key::light_up, s, o, first, first_orbit);
+    EXPECT_NEAR(elevation_of(s.light), 50, 1e-3f);
+    viewer::apply(Key::light_down, s, o, first, first_orbit);
+    viewer::apply(Key::light_down, s, o, first, first_orbit);
+    EXPECT_NEAR(elevation_of(s.light), 40, 1e-3f);
+    EXPECT_NEAR(rl::length(s.light), 1, 1e-5f);
+    for (int i = 0; i < 40; ++i) viewer::apply(Key::light_up, s, o, first, first_orbit);
+    EXPECT_NEAR(elevation_of(s.light), 85, 1e-3f);  // short of overhead, where azimuth is lost
+    viewer::apply(Key::light_down, s, o, first, first_orbit);
+    EXPECT_NEAR(elevation_of(s.light), 80, 1e-3f);  // and one step down moves it at once
+    viewer::drag_light(s, 25, 0);                   // 0.4 degrees a pixel
+    EXPECT_NEAR(azimuth_of(s.light), 85, 1e-3f);
+    viewer::drag_light(s, 0, -25);  // dragging up raises it
+    EXPECT_NEAR(elevation_of(s.light), 85, 1e-3f);
+    viewer::apply(Key::reset, s, o, first, first_orbit);
+    EXPECT_EQ(s.light, first.light);
+    viewer::drag_light(s, 0, 0);
+    EXPECT_EQ(s.light, first.light);  // no drag: the --light direction to the bit
+}
+
 TEST(Keys, EveryKeyHasANameAndAHelpLine) {
-    for (char c : std::string("<>^vpsmfnw+-r")) {
+    for (char c : std::string("<>^vpsmfnw+-rjlik")) {
         ASSERT_TRUE(viewer::key_named(c)) << c;
         EXPECT_NE(viewer::key_help().find(std::string("[") + c + "]"), std::string::npos) << c;
     }
@@ -146,6 +186,36 @@ TEST(Frames, SwitchingTheNormalMapChangesThePicture) {
     const rl::Image lesson07 = renderer.render(settings, s.scene.camera, 96, 64);
     settings.path = viewer::Path::shadows;
     EXPECT_NE(renderer.render(settings, s.scene.camera, 96, 64), lesson07);  // shadows
+}
+
+// A moved light reaches every path: the fast renderer's new lights give
+// the image a renderer built with them gives, lesson 07's path and lesson
+// 08's light the scene from it too.
+TEST(Frames, AMovedLightReachesEveryPath) {
+    Scene s;
+    viewer::FrameRenderer renderer(s.scene.models, s.request);
+    viewer::Settings settings;
+    const rl::Image before = renderer.render(settings, s.scene.camera, 96, 64);
+    settings.light = viewer::turned_light(settings.light, 60, 20);
+    const rl::Image moved = renderer.render(settings, s.scene.camera, 96, 64);
+    EXPECT_NE(moved, before);
+    fast::FastOptions o;
+    o.render = s.request.options;
+    o.render.lighting = shading::default_lighting(settings.light);
+    fast::Renderer reference(s.scene.models, 96, 64, o);
+    reference.render(s.scene.camera);
+    EXPECT_EQ(moved, reference.frame());
+
+    settings.path = viewer::Path::lesson07;
+    perspective::ColourTarget target = perspective::colour_target(96, 64);
+    normal_mapping::render(s.scene.models, s.scene.camera, o.render, target);
+    EXPECT_EQ(renderer.render(settings, s.scene.camera, 96, 64), target.colour());
+
+    settings.path = viewer::Path::shadows;
+    const rl::Image shadowed = renderer.render(settings, s.scene.camera, 96, 64);
+    viewer::Settings unmoved;
+    unmoved.path = viewer::Path::shadows;
+    EXPECT_NE(shadowed, renderer.render(unmoved, s.scene.camera, 96, 64));
 }
 
 TEST(Wireframe, DrawsEdgesOverThePicture) {
