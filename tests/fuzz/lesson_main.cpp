@@ -4,4 +4,6 @@
 // lessons/CMakeLists.txt.
 int lesson_main(int argc, char** argv);
 
-int main(int argc, char** argv) { return lesson_main(argc, argv); }
+int main(int argc, char** argv) {
+    return lesson_main(argc, argv);
+}

@@ -5,8 +5,8 @@
 // rectangles). docs/CMakeLists.txt draws the sign with 11_antialiasing.
 //
 //   11_text_sign --out DIR        then: 11_antialiasing --model DIR/sign.obj ...
-#include <CLI/CLI.hpp>
 #include <stb_easy_font.h>
+#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <array>
@@ -24,8 +24,9 @@ namespace {
 
 constexpr int kTexWidth = 256, kTexHeight = 48;  // texels; the quad is 0.01 world units a texel
 constexpr rl::Rgba kPaper{236, 230, 214, 255}, kInk{24, 24, 32, 255};
-const std::array<const char*, 3> kLines = {"An edge filter sees an edge in", "every stroke of small text:",
-                                           "1 px lines, 0123456789 ABC xyz"};
+const std::array<const char*, 3> kLines = {
+    "An edge filter sees an edge in",
+    "every stroke of small text:", "1 px lines, 0123456789 ABC xyz"};
 
 // stb_easy_font's vertex: a position (y down, in texels) and a colour.
 struct FontVertex {
@@ -39,9 +40,9 @@ rl::Image text_texture() {
     std::vector<FontVertex> vertices(4 * 1000);  // 1000 quads: far more than three lines use
     for (std::size_t line = 0; line < kLines.size(); ++line) {
         std::string text = kLines[line];
-        const int quads = stb_easy_font_print(4, 4 + 14 * static_cast<float>(line), text.data(),
-                                              nullptr, vertices.data(),
-                                              static_cast<int>(vertices.size() * sizeof(FontVertex)));
+        const int quads = stb_easy_font_print(
+            4, 4 + 14 * static_cast<float>(line), text.data(), nullptr, vertices.data(),
+            static_cast<int>(vertices.size() * sizeof(FontVertex)));
         for (int q = 0; q < quads; ++q) {
             const FontVertex* v = &vertices[4 * static_cast<std::size_t>(q)];
             const int x0 = static_cast<int>(std::lround(std::min(v[0].x, v[2].x)));
@@ -58,13 +59,16 @@ rl::Image text_texture() {
     return texture;
 }
 
-std::vector<std::uint8_t> bytes_of(const std::string& text) { return {text.begin(), text.end()}; }
+std::vector<std::uint8_t> bytes_of(const std::string& text) {
+    return {text.begin(), text.end()};
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Lesson 11's sign of small text, for the picture of the edge filter on text: "
-                 "writes sign.obj, sign.mtl and sign_diffuse.tga"};
+    CLI::App app{
+        "Lesson 11's sign of small text, for the picture of the edge filter on text: "
+        "writes sign.obj, sign.mtl and sign_diffuse.tga"};
     std::filesystem::path out;
     app.add_option("--out", out, "Folder to write the three files into")
         ->required()
@@ -76,19 +80,23 @@ int main(int argc, char** argv) {
             "# sign: a " + std::to_string(2 * half_width) + " x " + std::to_string(height) +
             " quad in the plane z = 0 facing +z, one texel per 0.01 (made by 11_text_sign)\n"
             "mtllib sign.mtl\nusemtl sign\n"
-            "v " + std::to_string(-half_width) + " 0 0\nv " + std::to_string(half_width) +
-            " 0 0\nv " + std::to_string(half_width) + " " + std::to_string(height) +
-            " 0\nv " + std::to_string(-half_width) + " " + std::to_string(height) +
+            "v " +
+            std::to_string(-half_width) + " 0 0\nv " + std::to_string(half_width) + " 0 0\nv " +
+            std::to_string(half_width) + " " + std::to_string(height) + " 0\nv " +
+            std::to_string(-half_width) + " " + std::to_string(height) +
             " 0\n"
             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
             "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
-        const std::string mtl = "newmtl sign\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 1\n"
-                                "map_Kd sign_diffuse.tga\n";
+        const std::string mtl =
+            "newmtl sign\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 1\n"
+            "map_Kd sign_diffuse.tga\n";
         rl::OutputFiles files;
-        for (const char* name : {"sign.obj", "sign.mtl", "sign_diffuse.tga"}) files.check(out / name);
+        for (const char* name : {"sign.obj", "sign.mtl", "sign_diffuse.tga"})
+            files.check(out / name);
         files.stage(out / "sign.obj", bytes_of(obj));
         files.stage(out / "sign.mtl", bytes_of(mtl));
-        files.stage(out / "sign_diffuse.tga", rl::encode_image(out / "sign_diffuse.tga", text_texture()));
+        files.stage(out / "sign_diffuse.tga",
+                    rl::encode_image(out / "sign_diffuse.tga", text_texture()));
         files.commit();
         return 0;
     });
