@@ -26,6 +26,7 @@ bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, F
         triangles::centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
                                    to_pixels(std::max({v[0].y, v[1].y, v[2].y})), 0, height);
     o.x0 = xs.first, o.x1 = xs.last, o.y0 = ys.first, o.y1 = ys.last;
+    if (o.empty()) return true;  // no centre in its box: the rest would be thrown away
     // [doc:edges]
     for (int k = 0; k < 3; ++k) {
         const triangles::FixedPoint a = v[(k + 1) % 3], b = v[(k + 2) % 3];

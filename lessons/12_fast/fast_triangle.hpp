@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "02_triangles/raster_edge.hpp"
 #include "05_perspective/pipeline.hpp"
@@ -44,6 +45,24 @@ struct FastTriangle {
         const std::int64_t px = std::int64_t{x} * triangles::kSubpixels + triangles::kSubpixels / 2;
         const std::int64_t py = std::int64_t{y} * triangles::kSubpixels + triangles::kSubpixels / 2;
         return edge_dx[k] * (py - edge_y[k]) - edge_dy[k] * (px - edge_x[k]);
+    }
+};
+
+// A frame's set-up triangles in drawing order, kept in the pieces the
+// threads set them up in: copying them into one array would cost about as
+// much as setting them up (some 350 bytes a triangle). Triangle i is piece
+// c's triangle i - start[c], for the c with start[c] <= i < start[c + 1].
+struct TriangleChunks {
+    std::vector<const FastTriangle*> data;  // per piece
+    std::vector<std::uint32_t> start;       // per piece, then the total
+    std::uint32_t size() const { return start.empty() ? 0 : start.back(); }
+    // Triangle i. `piece` is where the last lookup found its triangle: a
+    // tile reads its triangles in increasing order, so the search only
+    // ever steps forwards (it starts again from 0 if i went back).
+    const FastTriangle& at(std::uint32_t i, std::size_t& piece) const {
+        if (piece >= data.size() || i < start[piece]) piece = 0;
+        while (i >= start[piece + 1]) ++piece;
+        return data[piece][i - start[piece]];
     }
 };
 

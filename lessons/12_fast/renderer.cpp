@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <new>
 #include <optional>
 #include <stdexcept>
@@ -16,6 +17,10 @@
 namespace fast {
 
 namespace {
+
+// Faces a piece of the set-up holds: enough that a piece outweighs its
+// scheduling, few enough that two threads share a model of 10 000 faces.
+constexpr std::size_t kPieceFaces = 2048;
 
 using Clock = std::chrono::steady_clock;
 double milliseconds_since(Clock::time_point start) {
@@ -97,12 +102,26 @@ struct Renderer::Impl {
     std::vector<Material> materials;
     std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
     std::vector<char> drawn;                                           // per model, this frame
-    std::vector<FastTriangle> triangles;
+    // The faces in pieces of at most kPieceFaces, each set up by one thread
+    // into its own triangles; `triangles` reads them as one array, in order.
+    // The pieces depend on the models only, never on the thread count.
+    struct Piece {
+        std::size_t model, first_face, faces;
+        std::vector<FastTriangle> triangles;
+        perspective::PipelineCounts counts;
+        std::size_t refused = 0;
+        double visited = 0;  // pixels in the triangles' boxes (the overdraw cap)
+    };
+    std::vector<Piece> pieces;
+    TriangleChunks triangles;
+    // Binning, in parts of the triangles (one a thread): each part's entries
+    // per tile, then where it writes them (tiles x parts, reused).
+    std::vector<std::size_t> part_entries, part_bins;
     int tiles_x, tiles_y;
     // The bins, as one array sorted by tile (a counting sort): tile i's
     // triangles are binned[bin_start[i] .. bin_start[i + 1]), in drawing order.
     std::size_t tiles = 0;
-    std::vector<std::size_t> bin_start, bin_fill;  // 64-bit: the entries can pass 2^32
+    std::vector<std::size_t> bin_start;  // 64-bit: the entries can pass 2^32
     std::vector<std::uint32_t> binned;
     std::vector<TileCounts> tile_counts;                // per tile
     std::vector<std::unique_ptr<TileBuffers>> buffers;  // per worker thread
@@ -143,14 +162,21 @@ struct Renderer::Impl {
             materials.push_back(material_for(models.back(), placed.back()));
         }
         drawn.resize(models.size());
-        std::size_t faces = 0;
-        for (const FastModel& m : models) faces += m.indices.size() / 3;
-        triangles.reserve(faces + faces / 4 + 16);
+        for (std::size_t i = 0; i < models.size(); ++i) {
+            const std::size_t faces = models[i].indices.size() / 3;
+            for (std::size_t first = 0; first < faces; first += kPieceFaces) {
+                Piece& piece = pieces.emplace_back();
+                piece.model = i, piece.first_face = first;
+                piece.faces = std::min(kPieceFaces, faces - first);
+                piece.triangles.reserve(piece.faces + piece.faces / 4 + 16);
+            }
+        }
+        triangles.data.resize(pieces.size());
+        triangles.start.resize(pieces.size() + 1);
         tiles_x = (width + o.tile_size - 1) / o.tile_size;
         tiles_y = (height + o.tile_size - 1) / o.tile_size;
         tiles = static_cast<std::size_t>(tiles_x) * static_cast<std::size_t>(tiles_y);
         bin_start.resize(tiles + 1);
-        bin_fill.resize(tiles);
         tile_counts.resize(tiles);
         for (int i = 0; i < workers.threads(); ++i)
             buffers.push_back(std::make_unique<TileBuffers>(o.tile_size));
@@ -275,37 +301,34 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     }
     times_.vertex = milliseconds_since(start);
 
-    // 2. Cull, clip and set up every face, in lesson 07's order.
+    // 2. Cull, clip and set up every face, in lesson 07's order: the pieces
+    // in parallel, each into its own triangles.
     start = Clock::now();
-    s.triangles.clear();
     const perspective::PipelineOptions& pipeline = r.pipeline;
-    perspective::PipelineCounts pc;
-    const double most_visited =
-        pipeline.max_overdraw > 0 ? pipeline.max_overdraw * s.width * s.height : HUGE_VAL;
-    double visited = 0;
     const perspective::ClipPlanes planes =
         perspective::clip_planes(pipeline.clip, s.width, s.height);
-    for (std::size_t i = 0; i < s.models.size(); ++i) {
-        if (!s.drawn[i]) continue;
+    const auto set_up = [&](Impl::Piece& piece) {
+        piece.triangles.clear();
+        piece.counts = {}, piece.refused = 0, piece.visited = 0;
+        const std::size_t i = piece.model;
+        if (!s.drawn[i]) return;
         const auto keep = [&](const Setup& t) {
-            FastTriangle& fast = s.triangles.emplace_back();
+            FastTriangle& fast = piece.triangles.emplace_back();
             if (!fast_triangle(t, static_cast<std::uint32_t>(i), s.width, s.height, fast)) {
-                s.triangles.pop_back();
-                ++counts.refused;
+                piece.triangles.pop_back();
+                ++piece.refused;
                 return;
             }
             if (fast.empty()) {
-                s.triangles.pop_back();
+                piece.triangles.pop_back();
                 return;
             }
-            visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
-            if (visited > most_visited) perspective::throw_overdraw(most_visited);
+            piece.visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
         };
         const FastModel& m = s.models[i];
         const bool mirrored = s.placed[i]->surface.view.mirrored;
         const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
-        const std::size_t faces = m.indices.size() / 3;
-        for (std::size_t f = 0; f < faces; ++f) {
+        for (std::size_t f = piece.first_face; f < piece.first_face + piece.faces; ++f) {
             // The corners of step 1: with the vertex cache, three indices into
             // the distinct vertices, swapped as the surface swaps them when
             // mirrored; without it, already in the surface's order.
@@ -319,16 +342,42 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
             }
             // Lesson 05's stages 2-4: cull, clip, divide and viewport, set up.
             perspective::assemble_face(v, static_cast<int>(f), planes, s.width, s.height, pipeline,
-                                       pc, keep);
+                                       piece.counts, keep);
         }
+    };
+    if (s.options.parallel)
+        s.workers.for_chunks(s.pieces.size(), 1, [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t c = range.begin(); c != range.end(); ++c) set_up(s.pieces[c]);
+        });
+    else
+        for (Impl::Piece& piece : s.pieces) set_up(piece);
+    // The pieces, in order, as one array; the counts and the overdraw cap over all of them.
+    const double most_visited =
+        pipeline.max_overdraw > 0 ? pipeline.max_overdraw * s.width * s.height : HUGE_VAL;
+    double visited = 0;
+    std::size_t total = 0;
+    for (std::size_t c = 0; c < s.pieces.size(); ++c) {
+        const Impl::Piece& piece = s.pieces[c];
+        counts.culled += piece.counts.culled;
+        counts.clipped += piece.counts.clipped;
+        counts.outside += piece.counts.outside;
+        counts.refused += piece.refused;
+        visited += piece.visited;
+        s.triangles.data[c] = piece.triangles.data();
+        s.triangles.start[c] = static_cast<std::uint32_t>(total);
+        total += piece.triangles.size();
+        if (total >= std::numeric_limits<std::uint32_t>::max())
+            throw std::runtime_error("more than 2^32 - 2 triangles in one frame");
     }
-    counts.culled = pc.culled;
-    counts.clipped = pc.clipped;
-    counts.outside = pc.outside;
-    counts.triangles = s.triangles.size();
+    s.triangles.start.back() = static_cast<std::uint32_t>(total);
+    if (visited > most_visited) perspective::throw_overdraw(most_visited);
+    counts.triangles = total;
     times_.setup = milliseconds_since(start);
 
-    // 3. Binning: each triangle into the tiles its box touches, in order.
+    // 3. Binning: each triangle into the tiles its box touches, in drawing
+    // order. In parts of the triangles, one a thread: each part counts its
+    // entries per tile, the counts give each part where it writes in each
+    // tile's bin (after the parts before it), and each part writes its own.
     start = Clock::now();
     const int tile = s.options.tile_size;
     const auto each_tile_of = [&](const FastTriangle& f, auto&& visit) {
@@ -337,25 +386,67 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                 visit(static_cast<std::size_t>(ty * s.tiles_x + tx));
     };
     // [doc:binning]
-    std::size_t entries = 0;  // counted first, so that a frame over the cap costs nothing
-    for (const FastTriangle& f : s.triangles)
-        entries += static_cast<std::size_t>(f.x1 / tile - f.x0 / tile + 1) *
-                   static_cast<std::size_t>(f.y1 / tile - f.y0 / tile + 1);
+    // As many parts as threads, unless their counts would pass 2^24 (tiles
+    // of 8 at 16384²): then one part.
+    std::size_t parts = s.options.parallel ? static_cast<std::size_t>(s.workers.threads()) : 1;
+    if (parts * s.tiles > (std::size_t{1} << 24)) parts = 1;
+    parts = std::max<std::size_t>(1, std::min<std::size_t>(parts, total));
+    const auto in_parts = [&](auto&& body) {  // body(part, first triangle, end)
+        const auto run = [&](std::size_t p) {
+            body(p, static_cast<std::uint32_t>(total * p / parts),
+                 static_cast<std::uint32_t>(total * (p + 1) / parts));
+        };
+        if (parts == 1)
+            run(0);
+        else
+            s.workers.for_chunks(parts, 1, [&](const tbb::blocked_range<std::size_t>& range) {
+                for (std::size_t p = range.begin(); p != range.end(); ++p) run(p);
+            });
+    };
+    // Counted first, so that a frame over the cap costs nothing more.
+    s.part_entries.assign(parts, 0);
+    in_parts([&](std::size_t p, std::uint32_t first, std::uint32_t end) {
+        std::size_t piece = 0, entries = 0;
+        for (std::uint32_t t = first; t < end; ++t) {
+            const FastTriangle& f = s.triangles.at(t, piece);
+            entries += static_cast<std::size_t>(f.x1 / tile - f.x0 / tile + 1) *
+                       static_cast<std::size_t>(f.y1 / tile - f.y0 / tile + 1);
+        }
+        s.part_entries[p] = entries;
+    });
+    std::size_t entries = 0;
+    for (std::size_t e : s.part_entries) entries += e;
     if (entries > s.options.max_binned_entries)
         throw_binning_cap(entries, s.options.max_binned_entries, tile);
-    std::fill(s.bin_start.begin(), s.bin_start.end(), 0);
-    for (const FastTriangle& f : s.triangles)
-        each_tile_of(f, [&](std::size_t i) { ++s.bin_start[i + 1]; });
-    for (std::size_t i = 0; i < s.tiles; ++i) s.bin_start[i + 1] += s.bin_start[i];
+    // part_bins[p * tiles + i]: part p's entries in tile i, then where it writes them.
+    s.part_bins.assign(parts * s.tiles, 0);
+    in_parts([&](std::size_t p, std::uint32_t first, std::uint32_t end) {
+        std::size_t* mine = s.part_bins.data() + p * s.tiles;
+        std::size_t piece = 0;
+        for (std::uint32_t t = first; t < end; ++t)
+            each_tile_of(s.triangles.at(t, piece), [&](std::size_t i) { ++mine[i]; });
+    });
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < s.tiles; ++i) {
+        s.bin_start[i] = next;
+        for (std::size_t p = 0; p < parts; ++p) {
+            const std::size_t n = s.part_bins[p * s.tiles + i];
+            s.part_bins[p * s.tiles + i] = next;
+            next += n;
+        }
+    }
+    s.bin_start[s.tiles] = next;
     // Grown by half again when a frame needs more, so that an orbit's
     // frames after the first rarely need to grow it at all.
     if (entries > s.binned.size())
         s.binned.resize(std::min(entries * 3 / 2, std::max(entries, s.options.max_binned_entries)));
-    std::copy(s.bin_start.begin(), s.bin_start.end() - 1, s.bin_fill.begin());
-    for (std::size_t t = 0; t < s.triangles.size(); ++t)
-        each_tile_of(s.triangles[t], [&](std::size_t i) {
-            s.binned[s.bin_fill[i]++] = static_cast<std::uint32_t>(t);
-        });
+    in_parts([&](std::size_t p, std::uint32_t first, std::uint32_t end) {
+        std::size_t* write = s.part_bins.data() + p * s.tiles;
+        std::size_t piece = 0;
+        for (std::uint32_t t = first; t < end; ++t)
+            each_tile_of(s.triangles.at(t, piece),
+                         [&](std::size_t i) { s.binned[write[i]++] = t; });
+    });
     // [/doc:binning]
     times_.binning = milliseconds_since(start);
 

@@ -221,10 +221,11 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
               1.0f);  // the depth state's clear
     std::fill(buffers.id.get(), buffers.id.get() + buffers.pixels, kNoTriangle);
     std::fill(buffers.block_far.begin(), buffers.block_far.end(), 1.0f);
-    const std::vector<FastTriangle>& triangles = *work.triangles;
+    const TriangleChunks& triangles = *work.triangles;
+    std::size_t piece = 0;
     for (std::size_t i = 0; i < work.bin_size; ++i) {
         const std::uint32_t index = work.bin[i];
-        const FastTriangle& t = triangles[index];
+        const FastTriangle& t = triangles.at(index, piece);
         const BlockRange r = blocks_of(t, work);
         for (int by = r.first_y; by <= r.last_y; ++by)
             for (int bx = r.first_x; bx <= r.last_x; ++bx) {
@@ -703,7 +704,8 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DU du;
     const std::size_t n = hn::Lanes(df);
     const int blocks_per_row = buffers.size / kBlock;
-    const std::vector<FastTriangle>& triangles = *work.triangles;
+    const TriangleChunks& triangles = *work.triangles;
+    std::size_t piece = 0;
     const SlotTables& s = slots();
     // The queue: tile slots and tile-relative pixel positions; room for one
     // vector more than it ever keeps, as CompressStore writes a whole vector.
@@ -713,7 +715,7 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     std::uint32_t* colour = buffers.colour.get();
     for (std::size_t i = 0; i < work.bin_size; ++i) {
         const std::uint32_t index = work.bin[i];
-        const FastTriangle& t = triangles[index];
+        const FastTriangle& t = triangles.at(index, piece);
         const Material& material = work.materials[t.model];
         const BlockRange r = blocks_of(t, work);
         if (r.first_x > r.last_x) continue;
@@ -789,9 +791,14 @@ void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, Ti
         const std::uint32_t* block_row =
             buffers.colour.get() + static_cast<std::size_t>((y / kBlock) * blocks_per_row) * 64 +
             static_cast<std::size_t>((y % kBlock) * kBlock);
-        for (int x = 0; x < work.width; x += kBlock)
+        // A whole block's row is one fixed-size copy (a vector move); the
+        // frame's last partial block, fewer bytes.
+        int x = 0;
+        for (; x + kBlock <= work.width; x += kBlock)
+            std::memcpy(static_cast<void*>(row + x), block_row + (x / kBlock) * 64, kBlock * 4);
+        if (x < work.width)
             std::memcpy(static_cast<void*>(row + x), block_row + (x / kBlock) * 64,
-                        static_cast<std::size_t>(std::min(kBlock, work.width - x)) * 4);
+                        static_cast<std::size_t>(work.width - x) * 4);
     }
     counts.raster_ns += ns(rasterized - start);
     counts.shade_ns += ns(shaded - rasterized);

@@ -51,7 +51,7 @@ struct Techniques {
 struct TileWork {
     int x0, y0;         // the tile's lower-left pixel in the frame
     int width, height;  // its pixels within the frame (<= the tile size)
-    const std::vector<FastTriangle>* triangles;
+    const TriangleChunks* triangles;
     const std::uint32_t* bin;  // the tile's triangles, in drawing order
     std::size_t bin_size;
     const Material* materials;  // per model

@@ -26,6 +26,7 @@ std::optional<std::vector<std::pair<int, int>>> covered_pixels(const triangles::
     if (mistake == CoverageMistake::inclusive_ties || mistake == CoverageMistake::exclusive_ties)
         for (std::int64_t& threshold : triangles[0].threshold)
             threshold = mistake == CoverageMistake::inclusive_ties ? -1 : 0;
+    const TriangleChunks chunks{{triangles.data()}, {0, 1}};
     TileBuffers buffers(tile_size);
     const std::uint32_t bin[1] = {0};
     std::vector<std::vector<bool>> covered(static_cast<std::size_t>(height),
@@ -46,7 +47,7 @@ std::optional<std::vector<std::pair<int, int>>> covered_pixels(const triangles::
                             off ? y0 - y0 / tile_size : y0,
                             std::min(tile_size, width - x0),
                             std::min(tile_size, height - y0),
-                            &triangles,
+                            &chunks,
                             bin,
                             1,
                             nullptr,

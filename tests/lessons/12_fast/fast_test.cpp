@@ -112,8 +112,9 @@ TEST(WorkedExample, TheBlocksOfThePage) {
     std::vector<fast::FastTriangle> triangles(1);
     ASSERT_TRUE(fast::fast_triangle(setup, 0, 64, 64, triangles[0]));
     fast::TileBuffers buffers(64);
+    const fast::TriangleChunks chunks{{triangles.data()}, {0, 1}};
     const std::uint32_t bin[1] = {0};
-    const fast::TileWork work{0, 0, 64, 64, &triangles, bin, 1, nullptr, {}};
+    const fast::TileWork work{0, 0, 64, 64, &chunks, bin, 1, nullptr, {}};
     fast::TileCounts counts;
     fast::rasterize_tile(work, buffers, counts);
     EXPECT_EQ(counts.blocks_full, 1u);
