@@ -182,6 +182,12 @@ struct Renderer::Impl {
             buffers.push_back(std::make_unique<TileBuffers>(o.tile_size));
     }
 
+    // The frame's four steps (Renderer::render times each).
+    void run_vertex_stage(const perspective::Camera& camera, FrameCounts& counts);
+    void set_up_triangles(FrameCounts& counts);
+    void bin_triangles();
+    void draw_tiles(rl::Image& frame);
+
     Material material_for(const FastModel& m, const std::optional<shading::Placed>& p) const {
         const normal_mapping::RenderOptions& r = options.render;
         Material out;
@@ -245,15 +251,12 @@ int Renderer::threads() const {
     return impl_->workers.threads();
 }
 
-FrameCounts Renderer::render(const perspective::Camera& camera) {
-    Impl& s = *impl_;
+// 1. The vertex stage: lesson 07's vertex function, once per distinct vertex.
+void Renderer::Impl::run_vertex_stage(const perspective::Camera& camera, FrameCounts& counts) {
+    Impl& s = *this;
     const normal_mapping::RenderOptions& r = s.options.render;
-    FrameCounts counts;
     const float aspect = static_cast<float>(s.width) / static_cast<float>(s.height);
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
-
-    // 1. The vertex stage: lesson 07's vertex function, once per distinct vertex.
-    auto start = Clock::now();
     for (std::size_t i = 0; i < s.models.size(); ++i) {
         s.drawn[i] = false;
         if (!s.placed[i]) continue;
@@ -299,11 +302,13 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
             });
         }
     }
-    times_.vertex = milliseconds_since(start);
+}
 
-    // 2. Cull, clip and set up every face, in lesson 07's order: the pieces
-    // in parallel, each into its own triangles.
-    start = Clock::now();
+// 2. Cull, clip and set up every face, in lesson 07's order: the pieces
+// in parallel, each into its own triangles.
+void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
+    Impl& s = *this;
+    const normal_mapping::RenderOptions& r = s.options.render;
     const perspective::PipelineOptions& pipeline = r.pipeline;
     const perspective::ClipPlanes planes =
         perspective::clip_planes(pipeline.clip, s.width, s.height);
@@ -372,13 +377,15 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     s.triangles.start.back() = static_cast<std::uint32_t>(total);
     if (visited > most_visited) perspective::throw_overdraw(most_visited);
     counts.triangles = total;
-    times_.setup = milliseconds_since(start);
+}
 
-    // 3. Binning: each triangle into the tiles its box touches, in drawing
-    // order. In parts of the triangles, one a thread: each part counts its
-    // entries per tile, the counts give each part where it writes in each
-    // tile's bin (after the parts before it), and each part writes its own.
-    start = Clock::now();
+// 3. Binning: each triangle into the tiles its box touches, in drawing
+// order. In parts of the triangles, one a thread: each part counts its
+// entries per tile, the counts give each part where it writes in each
+// tile's bin (after the parts before it), and each part writes its own.
+void Renderer::Impl::bin_triangles() {
+    Impl& s = *this;
+    const std::size_t total = s.triangles.size();
     const int tile = s.options.tile_size;
     const auto each_tile_of = [&](const FastTriangle& f, auto&& visit) {
         for (int ty = f.y0 / tile; ty <= f.y1 / tile; ++ty)
@@ -448,12 +455,14 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                          [&](std::size_t i) { s.binned[write[i]++] = t; });
     });
     // [/doc:binning]
-    times_.binning = milliseconds_since(start);
+}
 
-    // 4. The tiles, in parallel: each one rasterized, shaded and copied into the frame by one
-    // thread.
-    start = Clock::now();
-    const auto draw_tile = [&](std::size_t i, TileBuffers& buffers) {
+// 4. The tiles, in parallel: each one rasterized, shaded and copied into the frame by one
+// thread.
+void Renderer::Impl::draw_tiles(rl::Image& frame) {
+    Impl& s = *this;
+    const int tile = s.options.tile_size;
+    const auto draw_tile = [&](std::size_t i, TileBuffers& own) {
         const int tx = static_cast<int>(i) % s.tiles_x, ty = static_cast<int>(i) / s.tiles_x;
         const TileWork work{tx * tile,
                             ty * tile,
@@ -466,15 +475,31 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
                             s.options.techniques};
         s.tile_counts[i] = {};
         rl::checkpoint();  // a host's Ctrl-C, between tiles
-        render_tile(work, buffers, frame_, s.tile_counts[i]);
+        render_tile(work, own, frame, s.tile_counts[i]);
     };
     if (s.options.parallel)
         s.workers.for_chunks(s.tiles, 1, [&](const tbb::blocked_range<std::size_t>& range) {
-            TileBuffers& buffers = *s.buffers[static_cast<std::size_t>(Workers::this_thread())];
-            for (std::size_t i = range.begin(); i != range.end(); ++i) draw_tile(i, buffers);
+            TileBuffers& own = *s.buffers[static_cast<std::size_t>(Workers::this_thread())];
+            for (std::size_t i = range.begin(); i != range.end(); ++i) draw_tile(i, own);
         });
     else
         for (std::size_t i = 0; i < s.tiles; ++i) draw_tile(i, *s.buffers[0]);
+}
+
+FrameCounts Renderer::render(const perspective::Camera& camera) {
+    Impl& s = *impl_;
+    FrameCounts counts;
+    auto start = Clock::now();
+    s.run_vertex_stage(camera, counts);
+    times_.vertex = milliseconds_since(start);
+    start = Clock::now();
+    s.set_up_triangles(counts);
+    times_.setup = milliseconds_since(start);
+    start = Clock::now();
+    s.bin_triangles();
+    times_.binning = milliseconds_since(start);
+    start = Clock::now();
+    s.draw_tiles(frame_);
     times_.tiles = milliseconds_since(start);
     for (const TileCounts& c : s.tile_counts) counts.tiles += c;
     return counts;
