@@ -5,11 +5,12 @@
 // is also compared, with lesson 07's and with llvmpipe's.
 //   1. 12_steps.csv: lesson 07's path, then the fast path with one technique
 //      after another turned on, at 1024x1024, on two scenes;
-//   2. 12_sizes.csv: 512^2 to 4096^2, three scenes (lesson 07's, the globe
-//      filling the frame, a sphere of about a million triangles with the
-//      globe's maps): ours on 1 and 2 threads, llvmpipe, lesson 07 (its
-//      scene), and the floor: clearing colour and depth and writing every
-//      pixel once;
+//   2. 12_sizes.csv: 512^2 to 4096^2, four scenes (lesson 07's, the globe
+//      filling the frame, and spheres of about 200 thousand and a million
+//      triangles with the globe's maps): ours on 1 and 2 threads, llvmpipe
+//      doing our shader's work and a plain llvmpipe (one light, the colour
+//      map), lesson 07 (its scene), and the floor: clearing colour and depth
+//      and writing every pixel once;
 //   3. 12_triangles.csv: the sphere from 2 thousand to 2 million triangles
 //      at 1024x1024, ours and llvmpipe;
 //   4. 12_stages.csv: where the fast path's time goes.
@@ -89,7 +90,7 @@ perspective::Camera filling_the_frame() {
 struct Cell {
     const Scene* scene;
     int size;
-    std::string renderer;       // "fast", "lesson 07", "llvmpipe", "floor"
+    std::string renderer;       // "fast", "lesson 07", "llvmpipe", "llvmpipe plain", "floor"
     fast::FastOptions options;  // for "fast"
     std::int64_t simd = 0;      // a Highway target to run with (0: the best)
     std::string name;           // the benchmark's
@@ -141,7 +142,9 @@ void time_floor(benchmark::State& state, const Cell* c) {
 
 #ifdef RASTERLAB_LLVMPIPE
 void time_llvmpipe(benchmark::State& state, const Cell* c) {
-    fast::LlvmpipePeer peer(c->size, c->size, kThreads);
+    fast::LlvmpipePeer peer(
+        c->size, c->size, kThreads,
+        c->renderer == "llvmpipe plain" ? fast::PeerShader::plain : fast::PeerShader::same_work);
     peer.upload(c->scene->models, c->options.render);
     peer.render(c->scene->camera);  // the first frame compiles the shaders
     int frame = 0;
@@ -174,7 +177,7 @@ void register_cell(Cell& c) {
     else if (c.renderer == "floor")
         b = benchmark::RegisterBenchmark(c.name.c_str(), time_floor, &c);
 #ifdef RASTERLAB_LLVMPIPE
-    else if (c.renderer == "llvmpipe")
+    else if (c.renderer == "llvmpipe" || c.renderer == "llvmpipe plain")
         b = benchmark::RegisterBenchmark(c.name.c_str(), time_llvmpipe, &c);
 #endif
     else
@@ -266,10 +269,12 @@ int main(int argc, char** argv) {
             normal_mapping::load_mapped_model(rl::project_model("globe"), rl::mat4::identity(),
                                               normal_mapping::TangentMethod::split, warnings);
         scenes.push_back({"the globe filling the frame", {globe}, filling_the_frame()});
-        const int million = options.quick ? 64 : 1000;  // segments: 2 x 1000 x 500 triangles
-        scenes.push_back({"a sphere of " + std::to_string(million * million) + " triangles",
-                          {sphere_with_globe_maps(globe, million)},
-                          filling_the_frame()});
+        // Spheres of segments^2 triangles: about 200 thousand and a million.
+        for (const int segments :
+             options.quick ? std::vector<int>{32, 64} : std::vector<int>{448, 1000})
+            scenes.push_back({"a sphere of " + std::to_string(segments * segments) + " triangles",
+                              {sphere_with_globe_maps(globe, segments)},
+                              filling_the_frame()});
         for (const Scene& s : scenes) normal_mapping::build_mip_levels(s.models);
 
         const std::vector<std::int64_t> simd_sets = fast::simd_targets();
@@ -309,8 +314,11 @@ int main(int argc, char** argv) {
             for (int size : sizes) {
                 size_cells.push_back(add(s, size, "fast", {}, 0, "fast, 2 threads"));
                 size_cells.push_back(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
-                if (peer)
+                if (peer) {
                     size_cells.push_back(add(s, size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
+                    size_cells.push_back(
+                        add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 2 threads"));
+                }
                 size_cells.push_back(add(s, size, "floor", {}, 0, "floor"));
                 if (&s == &scenes[0])
                     size_cells.push_back(add(s, size, "lesson 07", {}, 0, "lesson 07, 1 thread"));
@@ -357,13 +365,15 @@ int main(int argc, char** argv) {
                                  static_cast<long long>(d.max_abs), 100 * d.share_over});
         }
         // 2. The sizes: each against the floor, ours against llvmpipe.
+        // The ratios to llvmpipe are at equal threads for ours on two.
         rl::ResultsTable sizes_table({"scene", "size", "renderer", "ms_per_frame", "ms_min",
                                       "ms_max", "times_the_floor", "times_llvmpipe",
-                                      "percent_differing_from_llvmpipe"});
-        std::map<std::pair<const Scene*, int>, double> floor_ms, peer_ms;
+                                      "times_plain_llvmpipe", "percent_differing_from_llvmpipe"});
+        std::map<std::pair<const Scene*, int>, double> floor_ms, peer_ms, plain_ms;
         for (const Cell* c : size_cells) {
             if (c->renderer == "floor") floor_ms[{c->scene, c->size}] = ms(c);
             if (c->renderer == "llvmpipe") peer_ms[{c->scene, c->size}] = ms(c);
+            if (c->renderer == "llvmpipe plain") plain_ms[{c->scene, c->size}] = ms(c);
         }
         std::map<std::pair<const Scene*, int>, double> differing;
         if (peer)
@@ -380,6 +390,7 @@ int main(int argc, char** argv) {
                                  c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
                                  ms_max(c), ms(c) / floor_ms.at(key),
                                  ours && peer ? ms(c) / peer_ms.at(key) : NAN,
+                                 ours && peer ? ms(c) / plain_ms.at(key) : NAN,
                                  ours && peer ? differing.at(key) : NAN});
         }
         // 3. The triangle counts.

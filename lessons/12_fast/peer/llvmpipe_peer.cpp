@@ -94,6 +94,27 @@ void main() {
 }
 )";
 
+// The plain peer's fragment shader: one light, Phong, the colour map.
+const char* const kPlainFragmentShader = R"(#version 330 core
+in vec3 v_position, v_normal;
+in vec2 v_uv;
+uniform sampler2D albedo_map;
+uniform vec3 eye, ambient, specular_colour;
+uniform float shininess;
+uniform vec3 light_direction[8], light_colour[8];
+out vec4 colour;
+void main() {
+    vec3 n = normalize(v_normal);
+    vec3 l = light_direction[0];
+    float n_dot_l = max(dot(n, l), 0.0);
+    float s = n_dot_l > 0.0
+        ? pow(max(dot(reflect(-l, n), normalize(eye - v_position)), 0.0), shininess) : 0.0;
+    vec3 c = texture(albedo_map, v_uv).rgb * (ambient + light_colour[0] * n_dot_l) +
+             specular_colour * light_colour[0] * s;
+    colour = vec4(clamp(c, 0.0, 1.0), 1.0);
+}
+)";
+
 GLuint compile(GLenum kind, const char* source) {
     const GLuint shader = glCreateShader(kind);
     glShaderSource(shader, 1, &source, nullptr);
@@ -157,7 +178,8 @@ struct LlvmpipePeer::Impl {
     GLint location(const char* name) const { return glGetUniformLocation(program, name); }
 };
 
-LlvmpipePeer::LlvmpipePeer(int width, int height, int threads) : impl_(std::make_unique<Impl>()) {
+LlvmpipePeer::LlvmpipePeer(int width, int height, int threads, PeerShader shader)
+    : impl_(std::make_unique<Impl>()) {
     Impl& s = *impl_;
     s.width = width, s.height = height;
     // llvmpipe reads its thread count when its first context is made.
@@ -184,7 +206,8 @@ LlvmpipePeer::LlvmpipePeer(int width, int height, int threads) : impl_(std::make
         throw PeerUnavailable("OSMesa could not draw into a " + std::to_string(width) + "x" +
                               std::to_string(height) + " buffer");
     const GLuint vertex = compile(GL_VERTEX_SHADER, kVertexShader);
-    const GLuint fragment = compile(GL_FRAGMENT_SHADER, kFragmentShader);
+    const GLuint fragment = compile(
+        GL_FRAGMENT_SHADER, shader == PeerShader::plain ? kPlainFragmentShader : kFragmentShader);
     s.program = glCreateProgram();
     glAttachShader(s.program, vertex);
     glAttachShader(s.program, fragment);

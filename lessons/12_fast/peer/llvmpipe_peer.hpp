@@ -22,9 +22,15 @@
 
 namespace fast {
 
+// What the peer's fragment shader does: lesson 07's shader (the same work
+// as ours), or a plain one: one light, Phong, the colour map only, no
+// normal or specular map, no sRGB encoding (about half the work: the
+// independent check that ours is not slow for its extra work).
+enum class PeerShader { same_work, plain };
+
 class LlvmpipePeer : public Peer {
   public:
-    LlvmpipePeer(int width, int height, int threads);
+    LlvmpipePeer(int width, int height, int threads, PeerShader shader = PeerShader::same_work);
     ~LlvmpipePeer() override;
     LlvmpipePeer(const LlvmpipePeer&) = delete;
     LlvmpipePeer& operator=(const LlvmpipePeer&) = delete;
