@@ -99,6 +99,10 @@ struct Cell {
 void time_fast(benchmark::State& state, const Cell* c) {
     hwy::SetSupportedTargetsForTest(c->simd);
     fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
+    // A first frame, untimed, as llvmpipe's (which compiles its shaders):
+    // it grows the buffers, and a cell of one iteration a run (a million
+    // triangles) would otherwise time only that cold frame.
+    renderer.render(c->scene->camera);
     int frame = 0;
     for (auto _ : state) {
         renderer.render(fast::orbit(c->scene->camera, frame++ % kOrbitFrames, kOrbitFrames));
