@@ -4,13 +4,14 @@
 // tell from a jagged edge. The glyphs are stb_easy_font's (axis-aligned
 // rectangles). docs/CMakeLists.txt draws the sign with 11_antialiasing.
 //
-//   11_text_sign --out DIR        then: 11_antialiasing --model DIR/sign.obj ...
+//   11_text_sign -o DIR/sign_diffuse.tga    then: 11_antialiasing --model DIR/sign.obj ...
 #include <stb_easy_font.h>
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -67,14 +68,16 @@ std::vector<std::uint8_t> bytes_of(const std::string& text) {
 
 int main(int argc, char** argv) {
     CLI::App app{
-        "Lesson 11's sign of small text, for the picture of the edge filter on text: "
-        "writes sign.obj, sign.mtl and sign_diffuse.tga"};
-    std::filesystem::path out;
-    app.add_option("--out", out, "Folder to write the three files into")
-        ->required()
-        ->check(CLI::ExistingDirectory);
+        "Lesson 11's sign of small text, for the picture of the edge filter on text: writes "
+        "its texture (-o) and, beside it, sign.obj and sign.mtl"};
+    std::filesystem::path texture = "sign_diffuse.tga";
+    app.add_option("-o,--output", texture,
+                   "The sign's texture (.tga or .png); sign.obj and sign.mtl go in its folder")
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     return rl::guarded_main("11_text_sign", [&] {
+        rl::check_image_output(texture);
+        const std::filesystem::path folder = texture.parent_path();
         const float half_width = 0.005f * kTexWidth, height = 0.01f * kTexHeight;
         const std::string obj =
             "# sign: a " + std::to_string(2 * half_width) + " x " + std::to_string(height) +
@@ -87,17 +90,19 @@ int main(int argc, char** argv) {
             " 0\n"
             "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
             "f 1/1/1 2/2/1 3/3/1\nf 1/1/1 3/3/1 4/4/1\n";
-        const std::string mtl =
-            "newmtl sign\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 1\n"
-            "map_Kd sign_diffuse.tga\n";
+        const std::string mtl = "newmtl sign\nKa 0 0 0\nKd 1 1 1\nKs 0 0 0\nNs 1\nmap_Kd " +
+                                texture.filename().string() + "\n";
+        // All three or none; a texture named sign.obj or sign.mtl is refused
+        // (not .tga or .png), and OutputFiles refuses two names for one file.
         rl::OutputFiles files;
-        for (const char* name : {"sign.obj", "sign.mtl", "sign_diffuse.tga"})
-            files.check(out / name);
-        files.stage(out / "sign.obj", bytes_of(obj));
-        files.stage(out / "sign.mtl", bytes_of(mtl));
-        files.stage(out / "sign_diffuse.tga",
-                    rl::encode_image(out / "sign_diffuse.tga", text_texture()));
+        files.check(folder / "sign.obj");
+        files.check(folder / "sign.mtl");
+        files.check(texture);
+        files.stage(folder / "sign.obj", bytes_of(obj));
+        files.stage(folder / "sign.mtl", bytes_of(mtl));
+        files.stage(texture, rl::encode_image(texture, text_texture()));
         files.commit();
+        std::printf("wrote %s, and sign.obj and sign.mtl beside it\n", texture.string().c_str());
         return 0;
     });
 }
