@@ -54,7 +54,7 @@ rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_lig
     return box.centre() + rl::normalize(towards_light) * rl::length(box.max - box.min);
 }
 
-ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
+LightView light_view_for(const std::vector<normal_mapping::MappedModel>& models,
                          const perspective::Camera& camera, float aspect,
                          const ShadowOptions& options) {
     const perspective::Box scene = scene_box(models);
@@ -65,11 +65,17 @@ ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
         covered.add(rl::vec3{-1, -1, -1});
         covered.add(rl::vec3{1, 1, 1});
     }
+    return light_view(options.light, covered, scene);
+}
+
+ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
+                         const perspective::Camera& camera, float aspect,
+                         const ShadowOptions& options) {
     // (Chosen by reference: the ternary of a reference and a temporary would
     // copy every model, meshes and textures, into a temporary.)
     static const std::vector<normal_mapping::MappedModel> nothing;
     const std::vector<normal_mapping::MappedModel>& casters = options.casters ? models : nothing;
-    return render_shadow_map(casters, light_view(options.light, covered, scene), options.map);
+    return render_shadow_map(casters, light_view_for(models, camera, aspect, options), options.map);
 }
 
 SplitLighting split_lighting(const ShadowOptions& options) {

@@ -79,7 +79,13 @@ void refuse_spot_options(LightType type, bool position_given, bool cone_given);
 void place_spot(ShadowOptions& options, const perspective::Box& box,
                 const std::vector<float>& position);
 
-// The first pass. `aspect`: the camera's width / height, for Fit::view.
+// Where the first pass looks from: the light's view fitted to the scene, or
+// to what the camera sees of it. `aspect`: the camera's width / height.
+LightView light_view_for(const std::vector<normal_mapping::MappedModel>& models,
+                         const perspective::Camera& camera, float aspect,
+                         const ShadowOptions& options);
+
+// The first pass, from light_view_for's view.
 ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
                          const perspective::Camera& camera, float aspect,
                          const ShadowOptions& options);

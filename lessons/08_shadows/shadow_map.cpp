@@ -20,7 +20,8 @@ struct DepthProgram {
 };
 // [/doc:depth-program]
 
-// The refusal of a pass over its cap of `cap` texel visits.
+}  // namespace
+
 perspective::OverdrawError too_much_work(double cap, int size) {
     char text[400];
     std::snprintf(text, sizeof text,
@@ -32,24 +33,32 @@ perspective::OverdrawError too_much_work(double cap, int size) {
     return perspective::OverdrawError(text);
 }
 
-}  // namespace
-
-ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& models,
-                            const LightView& light, const ShadowMapOptions& options) {
-    if (options.size < 1 || options.size > kMaxShadowMapSize)
-        throw std::invalid_argument("--shadow-map-size: " + std::to_string(options.size) +
+void check_map_size(int size) {
+    if (size < 1 || size > kMaxShadowMapSize)
+        throw std::invalid_argument("--shadow-map-size: " + std::to_string(size) +
                                     " is outside 1 to " + std::to_string(kMaxShadowMapSize) +
                                     " texels (the cap: a map of 8192 x 8192 floats takes 256 MiB)");
-    perspective::TargetOptions target_options;
-    target_options.depth.constant_bias = options.constant_bias;
-    target_options.depth.slope_bias = options.slope_bias;
-    perspective::RenderTarget<> target(options.size, options.size, target_options);
+}
+
+perspective::PipelineOptions map_pipeline(const ShadowMapOptions& options) {
     perspective::PipelineOptions pipeline;
     pipeline.cull = options.cull;
     // At most a thousand layers of the map, and never more work than a
     // thousand layers of a 2048² map, whatever the map's size.
     const double texels = static_cast<double>(options.size) * options.size;
     pipeline.max_overdraw = std::min(pipeline.max_overdraw, options.max_samples / texels);
+    return pipeline;
+}
+
+ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& models,
+                            const LightView& light, const ShadowMapOptions& options) {
+    check_map_size(options.size);
+    perspective::TargetOptions target_options;
+    target_options.depth.constant_bias = options.constant_bias;
+    target_options.depth.slope_bias = options.slope_bias;
+    perspective::RenderTarget<> target(options.size, options.size, target_options);
+    const perspective::PipelineOptions pipeline = map_pipeline(options);
+    const double texels = static_cast<double>(options.size) * options.size;
     const auto pass = [&](const normal_mapping::MappedModel& m) {
         const perspective::TexturedModel& model = m.lit.model;
         return std::pair(perspective::MeshView(model.mesh, model.transform),

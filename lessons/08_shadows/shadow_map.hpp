@@ -43,6 +43,14 @@ struct ShadowMap {
 };
 
 // Throws std::invalid_argument for a size outside 1..kMaxShadowMapSize.
+void check_map_size(int size);
+// The pipeline options of the map's pass: its cull, and its overdraw cap
+// (options.max_samples texel visits, per model).
+perspective::PipelineOptions map_pipeline(const ShadowMapOptions& options);
+// The refusal of a model whose faces' boxes cover more than `cap` texels of a size² map.
+perspective::OverdrawError too_much_work(double cap, int size);
+
+// Throws std::invalid_argument for a size outside 1..kMaxShadowMapSize.
 ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& models,
                             const LightView& light, const ShadowMapOptions& options);
 

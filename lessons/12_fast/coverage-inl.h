@@ -197,7 +197,7 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                 const std::size_t block = static_cast<std::size_t>(by * blocks_per_row + bx);
                 // The test is `less`: nothing passes where every pixel is
                 // already nearer than the triangle's nearest point.
-                if (use.hierarchical_depth && t.z_min >= buffers.block_far[block]) {
+                if (use.hierarchical_depth && t.z_nearest >= buffers.block_far[block]) {
                     ++counts.blocks_occluded;
                     continue;
                 }
@@ -221,6 +221,10 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                                            hn::Mul(b[1], hn::Set(df, t.z[1]))),
                                    hn::Mul(b[2], hn::Set(df, t.z[2])));
                     z = hn::Min(hn::Max(z, hn::Set(df, t.z_min)), hn::Set(df, t.z_max));
+                    // Lesson 05's window_depth: a shadow map's bias, kept in [0, 1].
+                    if (t.depth_bias != 0)
+                        z = hn::Min(hn::Max(hn::Add(z, hn::Set(df, t.depth_bias)), hn::Zero(df)),
+                                    hn::Set(df, 1.0f));
                     const VF old = hn::Load(df, depth + first);
                     const MF pass = hn::And(covered, hn::Lt(z, old));
                     if (hn::AllFalse(df, pass)) continue;

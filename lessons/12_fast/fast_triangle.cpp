@@ -61,6 +61,7 @@ bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, F
     }
     o.z_min = std::min({o.z[0], o.z[1], o.z[2]});
     o.z_max = std::max({o.z[0], o.z[1], o.z[2]});
+    o.depth_bias = 0, o.z_nearest = o.z_min;
     o.d_uv_over_w[0][0] = t.d_over_w_dx.uv.x, o.d_uv_over_w[0][1] = t.d_over_w_dx.uv.y;
     o.d_uv_over_w[1][0] = t.d_over_w_dy.uv.x, o.d_uv_over_w[1][1] = t.d_over_w_dy.uv.y;
     o.d_inverse_w[0] = t.d_inverse_w_dx, o.d_inverse_w[1] = t.d_inverse_w_dy;

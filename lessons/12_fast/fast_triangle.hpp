@@ -34,7 +34,11 @@ struct FastTriangle {
     bool edges_fit_double;     // |E_k| < 2^53 over the frame: exact when stepped in double
     int x0, y0, x1, y1;        // the pixel centres of its box, inclusive, within the frame
     float z[3], z_min, z_max;  // window depth at the vertices (in input order, as lesson 05's)
-    float inverse_w[3];        // 1 / w
+    // Lesson 08's depth bias (0 but in a shadow map's pass), added to each
+    // sample's depth before its test, and the nearest depth it can give:
+    // z_min with the bias, kept in [0, 1] (the hierarchical test's bound).
+    float depth_bias = 0, z_nearest;
+    float inverse_w[3];               // 1 / w
     float over_w[3][kVaryingFloats];  // varyings / w
     float d_uv_over_w[2][2];          // d(uv / w)/dx, d(uv / w)/dy  (u then v)
     float d_inverse_w[2];             // d(1/w)/dx, d(1/w)/dy

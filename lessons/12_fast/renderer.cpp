@@ -79,6 +79,7 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
             if (added) out.representative.push_back(static_cast<std::uint32_t>(corner));
             out.indices[corner] = at->second;
         }
+    if (options.depth_only) return out;  // positions only: no texture is read
     const bool all_levels = options.render.filter == textures::Filter::trilinear;
     // The diffuse texture holds sRGB colours unless the output is naive (lesson 06).
     out.albedo = std::make_unique<PackedTexture>(
@@ -102,6 +103,7 @@ struct Renderer::Impl {
     std::vector<Material> materials;
     std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
     std::vector<char> drawn;                                           // per model, this frame
+    std::vector<char> mirrors;  // per model: its matrix mirrors (lesson 05's MeshView decides)
     // The faces in pieces of at most kPieceFaces, each set up by one thread
     // into its own triangles; `triangles` reads them as one array, in order.
     // The pieces depend on the models only, never on the thread count.
@@ -146,6 +148,14 @@ struct Renderer::Impl {
                                          "fast path (their size is the cause, not the image's)");
             }
             placed.push_back(std::nullopt);
+            mirrors.push_back(
+                perspective::MeshView(m.lit.model.mesh, m.lit.model.transform).mirrored);
+            clip.emplace_back(o.vertex_cache ? models.back().representative.size()
+                                             : models.back().indices.size());
+            if (o.depth_only) {  // nothing is shaded: no surface, no material
+                materials.emplace_back();
+                continue;
+            }
             if (const std::optional<rl::mat3> normals =
                     shading::normal_matrix(m.lit.model.transform)) {
                 // Member by member: a trailing {} by position zeroed `colour`.
@@ -157,8 +167,6 @@ struct Renderer::Impl {
                 placed.back() = shading::Placed{
                     u, shading::Surface(m.lit.model.mesh, m.lit.normals, m.lit.model.transform)};
             }
-            clip.emplace_back(o.vertex_cache ? models.back().representative.size()
-                                             : models.back().indices.size());
             materials.push_back(material_for(models.back(), placed.back()));
         }
         drawn.resize(models.size());
@@ -187,6 +195,15 @@ struct Renderer::Impl {
     void set_up_triangles(FrameCounts& counts);
     void bin_triangles();
     void draw_tiles(rl::Image& frame);
+    // render_depth()'s own first and last steps.
+    void run_depth_vertex_stage(const rl::mat4& view_projection, FrameCounts& counts);
+    void draw_depth_tiles(rl::FloatImage& depth);
+    // body(v) for each of model m's vertices of the vertex stage, on the threads.
+    template <class Body>
+    void for_each_vertex(const FastModel& m, FrameCounts& counts, Body&& body);
+    // body(tile index, its work, this thread's buffers) for each tile, on the threads.
+    template <class Body>
+    void for_each_tile(Body&& body);
 
     Material material_for(const FastModel& m, const std::optional<shading::Placed>& p) const {
         const normal_mapping::RenderOptions& r = options.render;
@@ -241,6 +258,7 @@ void Renderer::set_lighting(const shading::Lighting<float>& lighting) {
     if (lighting.lights.size() > static_cast<std::size_t>(kMaxLights))
         throw std::invalid_argument("the fast path takes at most 8 lights");
     s.options.render.lighting = lighting;
+    if (s.options.depth_only) return;  // it shades nothing
     for (std::size_t m = 0; m < s.models.size(); ++m) {
         if (s.placed[m]) s.placed[m]->uniforms.lighting = lighting;
         s.materials[m] = s.material_for(s.models[m], s.placed[m]);
@@ -276,31 +294,53 @@ void Renderer::Impl::run_vertex_stage(const perspective::Camera& camera, FrameCo
         const FastModel& m = s.models[i];
         const bool mirrored = p.surface.view.mirrored;
         std::vector<perspective::ClipVertex<Varyings>>& out = s.clip[i];
-        counts.faces += m.indices.size() / 3;
-        const auto run = [&](std::size_t count, auto&& vertex) {
-            counts.vertices += count;
-            const auto chunk = [&](const tbb::blocked_range<std::size_t>& range) {
-                for (std::size_t v = range.begin(); v != range.end(); ++v) vertex(v);
-            };
-            if (s.options.parallel)
-                s.workers.for_chunks(count, 1024, chunk);
-            else
-                chunk({0, count});
-        };
-        if (s.options.vertex_cache) {
-            run(m.representative.size(), [&](std::size_t v) {
+        s.for_each_vertex(m, counts, [&](std::size_t v) {
+            if (s.options.vertex_cache) {
                 const int face = static_cast<int>(m.representative[v] / 3);
                 const int corner = static_cast<int>(m.representative[v] % 3);
                 // The surface hands corner k over as (3 - k) % 3 when mirrored.
                 const int k = mirrored ? (3 - corner) % 3 : corner;
                 out[v] = shader.vertex(p.surface.corner(face, k));
-            });
-        } else {  // every corner of every face, in the surface's order
-            run(m.indices.size(), [&](std::size_t c) {
-                out[c] = shader.vertex(
-                    p.surface.corner(static_cast<int>(c / 3), static_cast<int>(c % 3)));
-            });
-        }
+            } else {  // every corner of every face, in the surface's order
+                out[v] = shader.vertex(
+                    p.surface.corner(static_cast<int>(v / 3), static_cast<int>(v % 3)));
+            }
+        });
+    }
+}
+
+template <class Body>
+void Renderer::Impl::for_each_vertex(const FastModel& m, FrameCounts& counts, Body&& body) {
+    // With the vertex cache, each distinct vertex; without, every corner.
+    const std::size_t count = options.vertex_cache ? m.representative.size() : m.indices.size();
+    counts.vertices += count;
+    counts.faces += m.indices.size() / 3;
+    const auto chunk = [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t v = range.begin(); v != range.end(); ++v) body(v);
+    };
+    if (options.parallel)
+        workers.for_chunks(count, 1024, chunk);
+    else
+        chunk({0, count});
+}
+
+// 1, for a shadow map: the positions alone, as lesson 08's depth program
+// computes them (no varyings: nothing is shaded).
+void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, FrameCounts& counts) {
+    for (std::size_t i = 0; i < models.size(); ++i) {
+        drawn[i] = true;  // lesson 08's pass culls no object
+        const FastModel& m = models[i];
+        const perspective::TexturedModel& model = m.source->lit.model;
+        const rl::mat4 model_view_projection = view_projection * model.transform;
+        std::vector<perspective::ClipVertex<Varyings>>& out = clip[i];
+        // Corner c of the mesh (a vertex's position does not depend on the
+        // order the surface hands the corners over in).
+        for_each_vertex(m, counts, [&](std::size_t v) {
+            const std::size_t c = options.vertex_cache ? m.representative[v] : v;
+            const perspective::MeshCorner corner{&model.mesh, static_cast<int>(c / 3),
+                                                 static_cast<int>(c % 3)};
+            out[v] = {perspective::clip_position(model_view_projection, corner.position()), {}};
+        });
     }
 }
 
@@ -312,12 +352,19 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
     const perspective::PipelineOptions& pipeline = r.pipeline;
     const perspective::ClipPlanes planes =
         perspective::clip_planes(pipeline.clip, s.width, s.height);
+    const triangles::PixelRect frame{0, 0, s.width, s.height};
+    zbuffer::DepthState bias;
+    bias.constant_bias = s.options.constant_bias, bias.slope_bias = s.options.slope_bias;
     const auto set_up = [&](Impl::Piece& piece) {
         piece.triangles.clear();
         piece.counts = {}, piece.refused = 0, piece.visited = 0;
         const std::size_t i = piece.model;
         if (!s.drawn[i]) return;
         const auto keep = [&](const Setup& t) {
+            // A shadow map's pass counts its work as lesson 08's does (by
+            // lesson 05's boxes, before the fixed-point snap).
+            if (s.options.depth_only)
+                piece.visited += static_cast<double>(perspective::box_samples(t.screen(), frame));
             FastTriangle& fast = piece.triangles.emplace_back();
             if (!fast_triangle(t, static_cast<std::uint32_t>(i), s.width, s.height, fast)) {
                 piece.triangles.pop_back();
@@ -328,10 +375,21 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
                 piece.triangles.pop_back();
                 return;
             }
-            piece.visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
+            if (s.options.depth_only) {
+                // [doc:depth-bias]
+                // Lesson 08's bias, once per triangle, and the nearest depth it
+                // can then give (for the hierarchical depth test).
+                fast.depth_bias = perspective::depth_bias(t, bias);
+                if (fast.depth_bias != 0)
+                    fast.z_nearest = std::clamp(fast.z_min + fast.depth_bias, 0.0f, 1.0f);
+                // [/doc:depth-bias]
+            } else {
+                piece.visited +=
+                    static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
+            }
         };
         const FastModel& m = s.models[i];
-        const bool mirrored = s.placed[i]->surface.view.mirrored;
+        const bool mirrored = s.mirrors[i];
         const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
         for (std::size_t f = piece.first_face; f < piece.first_face + piece.faces; ++f) {
             // The corners of step 1: with the vertex cache, three indices into
@@ -367,6 +425,11 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
         counts.clipped += piece.counts.clipped;
         counts.outside += piece.counts.outside;
         counts.refused += piece.refused;
+        // A shadow map's pass caps each model on its own, as lesson 08's does.
+        if (s.options.depth_only && c > 0 && piece.model != s.pieces[c - 1].model) {
+            if (visited > most_visited) perspective::throw_overdraw(most_visited);
+            visited = 0;
+        }
         visited += piece.visited;
         s.triangles.data[c] = piece.triangles.data();
         s.triangles.start[c] = static_cast<std::uint32_t>(total);
@@ -460,34 +523,61 @@ void Renderer::Impl::bin_triangles() {
 // 4. The tiles, in parallel: each one rasterized, shaded and copied into the frame by one
 // thread.
 void Renderer::Impl::draw_tiles(rl::Image& frame) {
-    Impl& s = *this;
-    const int tile = s.options.tile_size;
+    for_each_tile([&](std::size_t i, const TileWork& work, TileBuffers& own) {
+        render_tile(work, own, frame, tile_counts[i]);
+    });
+}
+
+template <class Body>
+void Renderer::Impl::for_each_tile(Body&& body) {
+    const int tile = options.tile_size;
     const auto draw_tile = [&](std::size_t i, TileBuffers& own) {
-        const int tx = static_cast<int>(i) % s.tiles_x, ty = static_cast<int>(i) / s.tiles_x;
+        const int tx = static_cast<int>(i) % tiles_x, ty = static_cast<int>(i) / tiles_x;
         const TileWork work{tx * tile,
                             ty * tile,
-                            std::min(tile, s.width - tx * tile),
-                            std::min(tile, s.height - ty * tile),
-                            &s.triangles,
-                            s.binned.data() + s.bin_start[i],
-                            s.bin_start[i + 1] - s.bin_start[i],
-                            s.materials.data(),
-                            s.options.techniques};
-        s.tile_counts[i] = {};
+                            std::min(tile, width - tx * tile),
+                            std::min(tile, height - ty * tile),
+                            &triangles,
+                            binned.data() + bin_start[i],
+                            bin_start[i + 1] - bin_start[i],
+                            materials.data(),
+                            options.techniques};
+        tile_counts[i] = {};
         rl::checkpoint();  // a host's Ctrl-C, between tiles
-        render_tile(work, own, frame, s.tile_counts[i]);
+        body(i, work, own);
     };
-    if (s.options.parallel)
-        s.workers.for_chunks(s.tiles, 1, [&](const tbb::blocked_range<std::size_t>& range) {
-            TileBuffers& own = *s.buffers[static_cast<std::size_t>(Workers::this_thread())];
+    if (options.parallel)
+        workers.for_chunks(tiles, 1, [&](const tbb::blocked_range<std::size_t>& range) {
+            TileBuffers& own = *buffers[static_cast<std::size_t>(Workers::this_thread())];
             for (std::size_t i = range.begin(); i != range.end(); ++i) draw_tile(i, own);
         });
     else
-        for (std::size_t i = 0; i < s.tiles; ++i) draw_tile(i, *s.buffers[0]);
+        for (std::size_t i = 0; i < tiles; ++i) draw_tile(i, *buffers[0]);
+}
+
+// 4, for a shadow map: each tile's visibility pass alone, its depth copied
+// into the map (the tile buffers hold 8x8 blocks: one block's row at a time).
+void Renderer::Impl::draw_depth_tiles(rl::FloatImage& depth) {
+    for_each_tile([&](std::size_t i, TileWork work, TileBuffers& own) {
+        work.techniques.shade_once = true;  // so that the pass shades nothing
+        rasterize_tile(work, own, tile_counts[i]);
+        const int blocks_per_row = own.size / kBlock;
+        for (int y = 0; y < work.height; ++y) {
+            float* row = &depth.at(work.x0, work.y0 + y);
+            const float* block_row = own.depth.get() +
+                                     static_cast<std::size_t>((y / kBlock) * blocks_per_row) * 64 +
+                                     static_cast<std::size_t>((y % kBlock) * kBlock);
+            for (int x = 0; x < work.width; x += kBlock)
+                std::memcpy(row + x, block_row + (x / kBlock) * 64,
+                            static_cast<std::size_t>(std::min(kBlock, work.width - x)) * 4);
+        }
+    });
 }
 
 FrameCounts Renderer::render(const perspective::Camera& camera) {
     Impl& s = *impl_;
+    if (s.options.depth_only)
+        throw std::logic_error("render: a depth_only renderer draws shadow maps (render_depth)");
     FrameCounts counts;
     auto start = Clock::now();
     s.run_vertex_stage(camera, counts);
@@ -500,6 +590,29 @@ FrameCounts Renderer::render(const perspective::Camera& camera) {
     times_.binning = milliseconds_since(start);
     start = Clock::now();
     s.draw_tiles(frame_);
+    times_.tiles = milliseconds_since(start);
+    for (const TileCounts& c : s.tile_counts) counts.tiles += c;
+    return counts;
+}
+
+FrameCounts Renderer::render_depth(const rl::mat4& view_projection, rl::FloatImage& depth) {
+    Impl& s = *impl_;
+    if (!s.options.depth_only)
+        throw std::logic_error("render_depth: the renderer was not built with depth_only");
+    if (depth.width() != s.width || depth.height() != s.height)
+        throw std::invalid_argument("render_depth: the map's size is not the renderer's");
+    FrameCounts counts;
+    auto start = Clock::now();
+    s.run_depth_vertex_stage(view_projection, counts);
+    times_.vertex = milliseconds_since(start);
+    start = Clock::now();
+    s.set_up_triangles(counts);
+    times_.setup = milliseconds_since(start);
+    start = Clock::now();
+    s.bin_triangles();
+    times_.binning = milliseconds_since(start);
+    start = Clock::now();
+    s.draw_depth_tiles(depth);
     times_.tiles = milliseconds_since(start);
     for (const TileCounts& c : s.tile_counts) counts.tiles += c;
     return counts;

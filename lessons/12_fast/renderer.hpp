@@ -43,6 +43,12 @@ struct FastOptions {
     bool vertex_cache = true;  // the vertex function once per distinct vertex, not per corner
     bool parallel = true;      // the vertex stage and the tiles on the threads (or on one)
     Techniques techniques;     // the tile kernels' (tile_kernels.hpp)
+    // A shadow map's pass (lesson 08's first pass) rather than a picture:
+    // render_depth() only, no textures packed, no lights. The pipeline's
+    // cull and max_overdraw (per model, as lesson 08 counts it) are the
+    // map's; the bias is lesson 08's depth bias.
+    bool depth_only = false;
+    float constant_bias = 0, slope_bias = 0;
 };
 
 // Where a frame's time went, in milliseconds of the clock, from timers
@@ -79,6 +85,11 @@ class Renderer {
              const FastOptions& options);
     ~Renderer();
     FrameCounts render(const perspective::Camera& camera);
+    // Lesson 08's shadow map pass on the same tiles (a renderer built with
+    // depth_only): each texel of `depth` (width x height) the nearest biased
+    // window depth seen through `view_projection`, 1 where nothing is.
+    // Throws perspective::OverdrawError for a model over the overdraw cap.
+    FrameCounts render_depth(const rl::mat4& view_projection, rl::FloatImage& depth);
     // New lights for the frames to come (at most 8), without rebuilding the
     // models: the viewer's light moves with a key or a drag.
     void set_lighting(const shading::Lighting<float>& lighting);

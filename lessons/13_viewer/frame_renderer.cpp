@@ -1,6 +1,8 @@
 #include "frame_renderer.hpp"
 
 #include "08_shadows/scene.hpp"
+
+#include <chrono>
 #include "wire_overlay.hpp"
 
 namespace viewer {
@@ -38,7 +40,7 @@ normal_mapping::RenderOptions FrameRenderer::options_for(const Settings& s) cons
 
 const rl::Image& FrameRenderer::render(const Settings& settings, const perspective::Camera& camera,
                                        int width, int height) {
-    stats_ = {faces_, 0};
+    stats_ = {faces_, 0, 0};
     const normal_mapping::RenderOptions options = options_for(settings);
     if (settings.path == Path::fast) {
         // What a rebuild depends on: not the path, the wire, the scale or the
@@ -73,8 +75,15 @@ const rl::Image& FrameRenderer::render(const Settings& settings, const perspecti
                 shadowed.render.lighting = options.lighting;
             }
             const float aspect = static_cast<float>(width) / static_cast<float>(height);
-            const shadows::ShadowMap map =
-                shadows::shadow_map_for(models_, camera, aspect, shadowed);
+            // The map's options never change in the viewer: the pass is built once.
+            if (!shadow_pass_)
+                shadow_pass_ = std::make_unique<fast::ShadowPass>(models_, shadowed.map);
+            const auto start = std::chrono::steady_clock::now();
+            const shadows::ShadowMap& map =
+                shadow_pass_->render(shadows::light_view_for(models_, camera, aspect, shadowed));
+            stats_.shadow_map_ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count();
             counts = shadows::render(models_, camera, shadowed, map, target);
         }
         stats_.pixels_shaded = counts.fragments;

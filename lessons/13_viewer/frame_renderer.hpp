@@ -3,6 +3,9 @@
 // framebuffer's size, with the wireframe over it if asked, lit from the
 // settings' light. The fast renderer is kept between frames and built again
 // only when the size or a shading option changes (a moved light is not one).
+// With shadows, the shadow map's pass is the fast path's (the same map as
+// lesson 08's, texel for texel, kept between frames), then lesson 08's
+// second pass draws the picture.
 //
 //   viewer::FrameRenderer renderer(scene.models, request);
 //   const rl::Image& frame = renderer.render(settings, camera, 800, 600);
@@ -13,6 +16,7 @@
 
 #include "07_normal_mapping/scene.hpp"
 #include "12_fast/renderer.hpp"
+#include "12_fast/shadow_pass.hpp"
 #include "controls.hpp"
 
 namespace viewer {
@@ -20,6 +24,7 @@ namespace viewer {
 struct FrameStats {
     std::size_t triangles = 0;      // sent to the renderer
     std::size_t pixels_shaded = 0;  // fragments shaded (the fast path: each visible pixel once)
+    double shadow_map_ms = 0;       // with shadows: the shadow map's pass, of the frame's time
 };
 
 class FrameRenderer {
@@ -43,6 +48,7 @@ class FrameRenderer {
     std::unique_ptr<fast::Renderer> fast_;
     Settings fast_settings_;  // what fast_ was built for
     int fast_width_ = 0, fast_height_ = 0;
+    std::unique_ptr<fast::ShadowPass> shadow_pass_;  // built at the first frame with shadows
     rl::Image picture_;  // lessons 07 and 08 draw here (and the wireframe goes on a copy)
     const rl::Image* frame_ = &picture_;
     FrameStats stats_;

@@ -102,6 +102,7 @@ int main(int argc, char** argv) {
         viewer::SdlWindow sdl("rasterlab 13_viewer", width, height, vsync);
         sdl.send_keys(keys);
         std::deque<double> recent, loops;  // the last 30 frames' render times, whole loops
+        std::deque<double> maps;           // their shadow map passes (with shadows)
         double median = 0;
         int drawn = 0;
         for (int i = 0; frames == 0 || i < frames; ++i, ++drawn) {
@@ -128,6 +129,8 @@ int main(int argc, char** argv) {
                     .count();
             recent.push_back(ms);
             if (recent.size() > 30) recent.pop_front();
+            maps.push_back(renderer.stats().shadow_map_ms);
+            if (maps.size() > 30) maps.pop_front();
             median = fast::median({recent.begin(), recent.end()});
             const bool last = frames > 0 && i == frames - 1;
             sdl.show(frame, last && !screenshot.empty() ? &screenshot : nullptr);
@@ -146,12 +149,16 @@ int main(int argc, char** argv) {
                 sdl.set_title(title);
             }
         }
+        char map_pass[96] = "";
+        if (settings.path == viewer::Path::shadows)
+            std::snprintf(map_pass, sizeof map_pass, " (the shadow map's pass: %.2f ms of it)",
+                          fast::median({maps.begin(), maps.end()}));
         std::printf(
-            "%d frames of %dx%d in a %dx%d window: median %.2f ms per frame to render, "
+            "%d frames of %dx%d in a %dx%d window: median %.2f ms per frame to render%s, "
             "%.2f ms per loop with the upload and the window (the last %zu); settings: "
             "%s%s%s\n",
             drawn, renderer.frame().width(), renderer.frame().height(), sdl.width(), sdl.height(),
-            median, fast::median({loops.begin(), loops.end()}), recent.size(),
+            median, map_pass, fast::median({loops.begin(), loops.end()}), recent.size(),
             viewer::describe(settings).c_str(), screenshot.empty() ? "" : "; screenshot ",
             screenshot.c_str());
         return 0;

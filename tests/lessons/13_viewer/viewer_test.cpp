@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "08_shadows/scene.hpp"
 #include "12_fast/renderer.hpp"
 #include "13_viewer/controls.hpp"
 #include "13_viewer/frame_renderer.hpp"
@@ -173,6 +174,32 @@ TEST(Frames, TheFastPathIsLessonTwelvesImage) {
     reference.render(s.scene.camera);
     EXPECT_EQ(shown, reference.frame());
     EXPECT_GT(renderer.stats().pixels_shaded, 0u);
+}
+
+// The S key: the fast path's shadow map, then lesson 08's second pass: lesson
+// 08's picture, byte for byte, frame after frame and with the light moved.
+TEST(Frames, TheShadowsAreLessonEightsPicture) {
+    Scene s;
+    viewer::FrameRenderer renderer(s.scene.models, s.request);
+    viewer::Settings settings;
+    settings.path = viewer::Path::shadows;
+    for (int frame = 0; frame < 3; ++frame) {
+        if (frame == 2) settings.light = viewer::turned_light(settings.light, 40, 10);
+        const rl::Image shown = renderer.render(settings, s.scene.camera, 96, 64);
+        shadows::ShadowOptions o;
+        o.render = s.request.options;
+        shadows::set_lights(o, s.request.view, s.request.one_light);
+        if (frame == 2) {
+            o.light.direction = rl::normalize(settings.light);
+            o.render.lighting = shading::default_lighting(settings.light);
+        }
+        const shadows::ShadowMap map =
+            shadows::shadow_map_for(s.scene.models, s.scene.camera, 96.0f / 64.0f, o);
+        perspective::ColourTarget target = perspective::colour_target(96, 64);
+        shadows::render(s.scene.models, s.scene.camera, o, map, target);
+        EXPECT_EQ(shown, target.colour()) << "frame " << frame;
+        EXPECT_GT(renderer.stats().shadow_map_ms, 0);
+    }
 }
 
 TEST(Frames, SwitchingTheNormalMapChangesThePicture) {

@@ -1,0 +1,130 @@
+// The fast path's shadow map pass against lesson 08's: the same map, texel
+// for texel, whatever the light, the map's size, the bias, the faces kept
+// and the thread count; the same refusals.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "08_shadows/scene.hpp"
+#include "12_fast/shadow_pass.hpp"
+#include "rasterlab/transform.hpp"
+
+namespace {
+
+using normal_mapping::MappedModel;
+
+// Lesson 08's scene, and a mirrored copy of its crate (the matrix flips the
+// winding: the cull must follow lesson 05's MeshView).
+std::vector<MappedModel> scene() {
+    std::vector<std::string> warnings;
+    std::vector<MappedModel> models = shadows::default_scene(warnings);
+    models.push_back(normal_mapping::load_mapped_model(
+        rl::project_model("crate"),
+        rl::compose({.translation = {-1.2f, 0.4f, 0.8f}, .scale = {-0.5f, 0.5f, 0.5f}}),
+        normal_mapping::TangentMethod::split, warnings));
+    return models;
+}
+
+// The texels where the two maps differ (0 for the same map), and how many
+// texels hold something (so that a test of two empty maps cannot pass).
+struct Compared {
+    int different = 0, covered = 0;
+};
+Compared compare(const rl::FloatImage& fast, const rl::FloatImage& lesson08) {
+    Compared out;
+    for (int y = 0; y < fast.height(); ++y)
+        for (int x = 0; x < fast.width(); ++x) {
+            out.different += fast.at(x, y) != lesson08.at(x, y);
+            out.covered += lesson08.at(x, y) < 1;
+        }
+    return out;
+}
+
+TEST(ShadowPass, TheMapIsLessonEightsTexelForTexel) {
+    const std::vector<MappedModel> models = scene();
+    const perspective::Box box = shadows::scene_box(models);
+    struct Case {
+        rl::vec3 towards_light;
+        shadows::ShadowMapOptions map;
+    };
+    const Case cases[] = {
+        {shadows::kSceneLight, {.size = 256}},  // lesson 08's default bias (slope 1)
+        {{0.3f, 0.5f, 1.0f}, {.size = 1000, .constant_bias = 0.002f, .slope_bias = 2}},
+        // A negative bias: a block's nearest depth must move with it.
+        {{-0.7f, 0.4f, 0.2f}, {.size = 333, .constant_bias = -0.004f, .slope_bias = 0}},
+        {{0.05f, 1.0f, 0.02f}, {.size = 37, .slope_bias = 0}},  // no bias, a map of 5 tiles of 8
+        {shadows::kSceneLight, {.size = 512, .cull = perspective::Cull::front}},
+        {{1.0f, 0.02f, 0.1f}, {.size = 200, .slope_bias = 1}},  // a grazing light
+    };
+    for (const Case& c : cases) {
+        const shadows::LightView light = shadows::light_view(
+            {shadows::LightType::directional, rl::normalize(c.towards_light)}, box);
+        const shadows::ShadowMap lesson08 = shadows::render_shadow_map(models, light, c.map);
+        for (int threads : {1, 2}) {
+            fast::ShadowPass pass(models, c.map, threads);
+            for (int again = 0; again < 2; ++again) {  // a second frame reuses the buffers
+                const Compared compared = compare(pass.render(light).depth, lesson08.depth);
+                EXPECT_EQ(compared.different, 0)
+                    << "map " << c.map.size << ", " << threads << " thread(s), frame " << again;
+                EXPECT_GT(compared.covered, c.map.size * c.map.size / 20) << c.map.size;
+            }
+        }
+    }
+}
+
+// A spot light (a perspective projection from a point) and the map fitted
+// to what a camera sees: lesson 08's program's own light view.
+TEST(ShadowPass, TheMapIsLessonEightsForASpotLightAndAFittedView) {
+    const std::vector<MappedModel> models = scene();
+    std::vector<std::string> warnings;
+    perspective::ViewOptions view;
+    const perspective::ViewedScene<MappedModel> viewed =
+        shadows::load_scene(view, normal_mapping::TangentMethod::split, 320, 240, warnings);
+    shadows::ShadowOptions options;
+    options.map.size = 640;
+    const shadows::LightView fitted =
+        shadows::light_view_for(models, viewed.camera, 320.0f / 240.0f, options);
+    shadows::ShadowLight spot{shadows::LightType::spot, rl::normalize(shadows::kSceneLight)};
+    spot.position = shadows::default_spot_position(shadows::scene_box(models), spot.direction);
+    const shadows::LightView spot_view = shadows::light_view(spot, shadows::scene_box(models));
+    for (const shadows::LightView& light : {fitted, spot_view}) {
+        const shadows::ShadowMap lesson08 = shadows::render_shadow_map(models, light, options.map);
+        fast::ShadowPass pass(models, options.map, 2);
+        const Compared compared = compare(pass.render(light).depth, lesson08.depth);
+        EXPECT_EQ(compared.different, 0);
+        EXPECT_GT(compared.covered, 0);
+    }
+}
+
+TEST(ShadowPass, RefusesWhatLessonEightRefuses) {
+    const std::vector<MappedModel> models = scene();
+    EXPECT_THROW(fast::ShadowPass(models, {.size = 0}), std::invalid_argument);
+    EXPECT_THROW(fast::ShadowPass(models, {.size = shadows::kMaxShadowMapSize + 1}),
+                 std::invalid_argument);
+    const shadows::LightView light = shadows::light_view({}, shadows::scene_box(models));
+    // Caps from a tenth of a layer of the map to eight layers: each refused
+    // by both, in lesson 08's words, or by neither (lesson 08 caps each model
+    // on its own, not the scene).
+    int refused = 0, drawn = 0;
+    for (double layers : {0.1, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0, 8.0}) {
+        shadows::ShadowMapOptions options{.size = 256};
+        options.max_samples = layers * 256 * 256;
+        std::string lesson08, ours;
+        try {
+            shadows::render_shadow_map(models, light, options);
+        } catch (const perspective::OverdrawError& e) {
+            lesson08 = e.what();
+        }
+        try {
+            fast::ShadowPass(models, options, 2).render(light);
+        } catch (const perspective::OverdrawError& e) {
+            ours = e.what();
+        }
+        EXPECT_EQ(ours, lesson08) << layers << " layers";
+        ++(lesson08.empty() ? drawn : refused);
+    }
+    EXPECT_GT(refused, 0);
+    EXPECT_GT(drawn, 0);
+}
+
+}  // namespace
