@@ -37,6 +37,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
   12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
+  12_shadow_pass.svg         a shadow map's block skip under a negative depth bias: bounded by the
+                             unbiased nearest depth (a nearer triangle lost) or by the biased one
   13_frame_path.svg          one frame of the viewer, from the keyboard to the window
 """
 import math
@@ -1002,6 +1004,39 @@ def lane_queue(out):
     save(figure, out, "12_lane_queue.svg")
 
 
+def shadow_pass(out):
+    # One 8-texel block of a shadow map, depth upwards (farther up). A was
+    # drawn first and stored its depth plus a negative bias; B, drawn next,
+    # lies just in front of A. The block is skipped when B's nearest depth
+    # is not nearer than the block's farthest stored depth: compared
+    # unbiased, B is skipped though its biased depth would pass; compared
+    # with the bias, B is tested and stored.
+    a_depth, b_depth, bias = 0.50, 0.48, -0.04
+    far = a_depth + bias
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.4), sharey=True)
+    for axes, bound, title in ((left, b_depth, "bound = B's nearest depth, unbiased:\n"
+                                               f"{b_depth:.2f} >= {far:.2f}: block skipped, B lost"),
+                               (right, b_depth + bias, "bound = B's nearest depth plus the bias:\n"
+                                                       f"{b_depth + bias:.2f} < {far:.2f}: tested, B stored")):
+        axes.add_patch(Rectangle((0, 0.40), 8, 0.14, color=SOFT, lw=0))
+        axes.plot([0, 8], [a_depth, a_depth], color=INK, lw=1.2, ls=":")
+        axes.plot([0, 8], [far, far], color=INK, lw=1.8, label="A + bias: stored (the block's farthest)")
+        axes.plot([0, 8], [b_depth, b_depth], color=LINE, lw=1.2, ls=":")
+        axes.plot([0, 8], [b_depth + bias, b_depth + bias], color=LINE, lw=1.8, label="B + bias: what B would store")
+        axes.plot([4], [bound], "o", color=ACCENT, markersize=6, label="the bound the skip test compares")
+        axes.text(8.1, a_depth, "A", fontsize=8, va="center")
+        axes.text(8.1, b_depth, "B", fontsize=8, va="center", color=LINE)
+        axes.set_xlim(0, 9)
+        axes.set_ylim(0.40, 0.54)
+        axes.set_xlabel("texels of one 8x8 block's row", fontsize=8)
+        axes.set_title(title, fontsize=8)
+        axes.tick_params(labelsize=7)
+    left.set_ylabel("window depth from the light (farther up)", fontsize=8)
+    right.legend(fontsize=6.5, loc="upper left")
+    figure.suptitle(f"A shadow map's block with a bias of {bias}: dotted, the unbiased depths", fontsize=9)
+    save(figure, out, "12_shadow_pass.svg")
+
+
 def frame_path(out):
     # The viewer's loop as boxes: the input changes plain state, the state
     # draws a frame in memory (bottom row first), and the frame goes to the
@@ -1502,7 +1537,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, shadow_pass, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 

@@ -23,7 +23,7 @@ constexpr KeyName kKeys[] = {
     {'^', '\0', Key::move_closer, "up arrow: move towards the target"},
     {'v', '\0', Key::move_away, "down arrow: move away from the target"},
     {'p', 'p', Key::next_path, "P: the renderer, lesson 12's fast path or lesson 07's"},
-    {'s', 's', Key::shadows, "S: shadows on or off (lesson 08's renderer)"},
+    {'s', 's', Key::shadows, "S: shadows on or off (lesson 08's, its shadow map drawn by the fast path)"},
     {'m', 'm', Key::specular, "M: the highlight, Blinn-Phong or Phong"},
     {'f', 'f', Key::filter, "F: the texture filter, trilinear, nearest, bilinear"},
     {'n', 'n', Key::normal_map, "N: the normal map, tangent, object or none"},
