@@ -198,6 +198,8 @@ struct Renderer::Impl {
     // render_depth()'s own first and last steps.
     void run_depth_vertex_stage(const rl::mat4& view_projection, FrameCounts& counts);
     void draw_depth_tiles(rl::FloatImage& depth);
+    template <class Vertices, class Tiles>
+    FrameCounts timed_frame(StageTimes& times, Vertices&& vertex_step, Tiles&& tile_step);
     // body(v) for each of model m's vertices of the vertex stage, on the threads.
     template <class Body>
     void for_each_vertex(const FastModel& m, FrameCounts& counts, Body&& body);
@@ -574,25 +576,35 @@ void Renderer::Impl::draw_depth_tiles(rl::FloatImage& depth) {
     });
 }
 
+// The frame's four steps, each timed: `vertex_step(counts)` runs the first,
+// `tile_step()` the last.
+template <class Vertices, class Tiles>
+FrameCounts Renderer::Impl::timed_frame(StageTimes& times, Vertices&& vertex_step,
+                                        Tiles&& tile_step) {
+    FrameCounts counts;
+    auto start = Clock::now();
+    vertex_step(counts);
+    times.vertex = milliseconds_since(start);
+    start = Clock::now();
+    set_up_triangles(counts);
+    times.setup = milliseconds_since(start);
+    start = Clock::now();
+    bin_triangles();
+    times.binning = milliseconds_since(start);
+    start = Clock::now();
+    tile_step();
+    times.tiles = milliseconds_since(start);
+    for (const TileCounts& c : tile_counts) counts.tiles += c;
+    return counts;
+}
+
 FrameCounts Renderer::render(const perspective::Camera& camera) {
     Impl& s = *impl_;
     if (s.options.depth_only)
         throw std::logic_error("render: a depth_only renderer draws shadow maps (render_depth)");
-    FrameCounts counts;
-    auto start = Clock::now();
-    s.run_vertex_stage(camera, counts);
-    times_.vertex = milliseconds_since(start);
-    start = Clock::now();
-    s.set_up_triangles(counts);
-    times_.setup = milliseconds_since(start);
-    start = Clock::now();
-    s.bin_triangles();
-    times_.binning = milliseconds_since(start);
-    start = Clock::now();
-    s.draw_tiles(frame_);
-    times_.tiles = milliseconds_since(start);
-    for (const TileCounts& c : s.tile_counts) counts.tiles += c;
-    return counts;
+    return s.timed_frame(
+        times_, [&](FrameCounts& counts) { s.run_vertex_stage(camera, counts); },
+        [&] { s.draw_tiles(frame_); });
 }
 
 FrameCounts Renderer::render_depth(const rl::mat4& view_projection, rl::FloatImage& depth) {
@@ -601,21 +613,9 @@ FrameCounts Renderer::render_depth(const rl::mat4& view_projection, rl::FloatIma
         throw std::logic_error("render_depth: the renderer was not built with depth_only");
     if (depth.width() != s.width || depth.height() != s.height)
         throw std::invalid_argument("render_depth: the map's size is not the renderer's");
-    FrameCounts counts;
-    auto start = Clock::now();
-    s.run_depth_vertex_stage(view_projection, counts);
-    times_.vertex = milliseconds_since(start);
-    start = Clock::now();
-    s.set_up_triangles(counts);
-    times_.setup = milliseconds_since(start);
-    start = Clock::now();
-    s.bin_triangles();
-    times_.binning = milliseconds_since(start);
-    start = Clock::now();
-    s.draw_depth_tiles(depth);
-    times_.tiles = milliseconds_since(start);
-    for (const TileCounts& c : s.tile_counts) counts.tiles += c;
-    return counts;
+    return s.timed_frame(
+        times_, [&](FrameCounts& counts) { s.run_depth_vertex_stage(view_projection, counts); },
+        [&] { s.draw_depth_tiles(depth); });
 }
 
 OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames,
