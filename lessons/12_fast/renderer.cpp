@@ -335,10 +335,18 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
         const perspective::TexturedModel& model = m.source->lit.model;
         const rl::mat4 model_view_projection = view_projection * model.transform;
         std::vector<perspective::ClipVertex<Varyings>>& out = clip[i];
-        // Corner c of the mesh (a vertex's position does not depend on the
-        // order the surface hands the corners over in).
+        const bool mirrored = mirrors[i];
         for_each_vertex(m, counts, [&](std::size_t v) {
-            const std::size_t c = options.vertex_cache ? m.representative[v] : v;
+            // With the vertex cache, mesh corner c (a vertex's position does
+            // not depend on the order the corners are handed over in);
+            // without it, corner v in the surface's order: corner k of the
+            // face is the mesh's (3 - k) % 3 when mirrored, as lesson 05's
+            // MeshView hands it over.
+            std::size_t c = v;
+            if (options.vertex_cache)
+                c = m.representative[v];
+            else if (mirrored)
+                c = c / 3 * 3 + (3 - c % 3) % 3;
             const perspective::MeshCorner corner{&model.mesh, static_cast<int>(c / 3),
                                                  static_cast<int>(c % 3)};
             out[v] = {perspective::clip_position(model_view_projection, corner.position()), {}};
@@ -417,8 +425,10 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
     else
         for (Impl::Piece& piece : s.pieces) set_up(piece);
     // The pieces, in order, as one array; the counts and the overdraw cap over all of them.
-    const double most_visited =
-        pipeline.max_overdraw > 0 ? pipeline.max_overdraw * s.width * s.height : HUGE_VAL;
+    // (A picture's cap of 0 or less is no cap; a map's is lesson 08's, 0 included.)
+    const double most_visited = pipeline.max_overdraw > 0 || s.options.depth_only
+                                    ? pipeline.max_overdraw * s.width * s.height
+                                    : HUGE_VAL;
     double visited = 0;
     std::size_t total = 0;
     for (std::size_t c = 0; c < s.pieces.size(); ++c) {

@@ -102,7 +102,7 @@ int main(int argc, char** argv) {
         viewer::SdlWindow sdl("rasterlab 13_viewer", width, height, vsync);
         sdl.send_keys(keys);
         std::deque<double> recent, loops;  // the last 30 frames' render times, whole loops
-        std::deque<double> maps;           // their shadow map passes (with shadows)
+        std::deque<double> maps;           // the last 30 shadow map passes (frames with shadows)
         double median = 0;
         int drawn = 0;
         for (int i = 0; frames == 0 || i < frames; ++i, ++drawn) {
@@ -129,8 +129,10 @@ int main(int argc, char** argv) {
                     .count();
             recent.push_back(ms);
             if (recent.size() > 30) recent.pop_front();
-            maps.push_back(renderer.stats().shadow_map_ms);
-            if (maps.size() > 30) maps.pop_front();
+            if (settings.path == viewer::Path::shadows) {  // a frame without adds nothing
+                maps.push_back(renderer.stats().shadow_map_ms);
+                if (maps.size() > 30) maps.pop_front();
+            }
             median = fast::median({recent.begin(), recent.end()});
             const bool last = frames > 0 && i == frames - 1;
             sdl.show(frame, last && !screenshot.empty() ? &screenshot : nullptr);
@@ -150,9 +152,10 @@ int main(int argc, char** argv) {
             }
         }
         char map_pass[96] = "";
-        if (settings.path == viewer::Path::shadows)
-            std::snprintf(map_pass, sizeof map_pass, " (the shadow map's pass: %.2f ms of it)",
-                          fast::median({maps.begin(), maps.end()}));
+        if (settings.path == viewer::Path::shadows && !maps.empty())
+            std::snprintf(map_pass, sizeof map_pass,
+                          " (the shadow map's pass: %.2f ms of it, median of the last %zu)",
+                          fast::median({maps.begin(), maps.end()}), maps.size());
         std::printf(
             "%d frames of %dx%d in a %dx%d window: median %.2f ms per frame to render%s, "
             "%.2f ms per loop with the upload and the window (the last %zu); settings: "
