@@ -8,11 +8,13 @@
 //   material.albedo = &diffuse;  // a fast::PackedTexture, or nullptr for material.colour
 //   material.normal_source = fast::NormalSource::tangent_map;
 //   material.normal_map = &tangent_map;
+//   material.shadow_map = &map;  // a shadows::ShadowMap from the key light, or nullptr
 #pragma once
 
 #include <cstdint>
 
 #include "06_shading/lighting.hpp"
+#include "08_shadows/shadow_lookup.hpp"
 #include "packed_texture.hpp"
 
 namespace fast {
@@ -36,6 +38,11 @@ struct Material {
     float colour[3];
     const PackedTexture* normal_map = nullptr;  // the one normal_source names
     const PackedTexture* specular_map = nullptr;
+    // Lesson 08's second pass: the first light (the key light the map was
+    // made from, directional) scaled at each pixel by what the map lets
+    // through, by lesson 08's lookup; none: no shadows.
+    const shadows::ShadowMap* shadow_map = nullptr;
+    shadows::ShadowLookup shadow_lookup;
 };
 
 }  // namespace fast

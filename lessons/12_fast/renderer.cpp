@@ -101,6 +101,8 @@ struct Renderer::Impl {
     // matrix flattens it.
     std::vector<std::optional<shading::Placed>> placed;
     std::vector<Material> materials;
+    const shadows::ShadowMap* shadow_map = nullptr;  // set_shadow_map()'s, for every material
+    shadows::ShadowLookup shadow_lookup;
     std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
     std::vector<char> drawn;                                           // per model, this frame
     std::vector<char> mirrors;  // per model: its matrix mirrors (lesson 05's MeshView decides)
@@ -245,6 +247,8 @@ struct Renderer::Impl {
             out.normal_map = m.object_map.get();
         }
         out.specular_map = m.specular_map.get();
+        out.shadow_map = shadow_map;
+        out.shadow_lookup = shadow_lookup;
         return out;
     }
 };
@@ -265,6 +269,15 @@ void Renderer::set_lighting(const shading::Lighting<float>& lighting) {
         if (s.placed[m]) s.placed[m]->uniforms.lighting = lighting;
         s.materials[m] = s.material_for(s.models[m], s.placed[m]);
     }
+}
+
+void Renderer::set_shadow_map(const shadows::ShadowMap* map, const shadows::ShadowLookup& lookup) {
+    Impl& s = *impl_;
+    if (map && map->light.type == shadows::LightType::spot)
+        throw std::invalid_argument(
+            "the fast path's shadows take a directional light's map, not a spot light's");
+    s.shadow_map = map, s.shadow_lookup = lookup;
+    for (Material& m : s.materials) m.shadow_map = map, m.shadow_lookup = lookup;
 }
 
 int Renderer::threads() const {

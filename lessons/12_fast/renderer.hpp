@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "07_normal_mapping/scene.hpp"
+#include "08_shadows/shadow_map.hpp"
 #include "fast_triangle.hpp"
 #include "material.hpp"
 #include "tile_kernels.hpp"
@@ -93,6 +94,13 @@ class Renderer {
     // New lights for the frames to come (at most 8), without rebuilding the
     // models: the viewer's light moves with a key or a drag.
     void set_lighting(const shading::Lighting<float>& lighting);
+    // Lesson 08's second pass from the next frame on: the first light (the
+    // key light) scaled at each pixel by what `map` lets through, by lesson
+    // 08's visibility() with `lookup`; nullptr: no shadows. The map must be
+    // made from the first light's direction and outlive the frames drawn
+    // with it. Throws std::invalid_argument for a spot light's map (its
+    // light comes from a point, not from the first light's direction).
+    void set_shadow_map(const shadows::ShadowMap* map, const shadows::ShadowLookup& lookup = {});
     const rl::Image& frame() const { return frame_; }
     const StageTimes& times() const { return times_; }
     int threads() const;

@@ -15,6 +15,7 @@
 #include <cstdint>
 
 #include "06_shading/colour.hpp"
+#include "08_shadows/shadow_lookup.hpp"
 #include "12_fast/sampling-inl.h"
 #include "12_fast/simd_types-inl.h"
 #include "12_fast/tile_kernels.hpp"
@@ -82,8 +83,30 @@ HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
                           hn::Set(di, 255), b);
 }
 
+// Lesson 08's visibility() at each lane the key light reaches, 1 at the
+// others (no light there to take away). Lane by lane, in scalar code: each
+// lane's filter reads its own few texels, scattered over the map, and
+// lesson 08's function is the definition the picture must keep.
+HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, const Vec3& normal,
+                             MF lit) {
+    alignas(64) float x[hn::MaxLanes(df)], y[hn::MaxLanes(df)], z[hn::MaxLanes(df)];
+    alignas(64) float nx[hn::MaxLanes(df)], ny[hn::MaxLanes(df)], nz[hn::MaxLanes(df)];
+    alignas(64) float out[hn::MaxLanes(df)];
+    hn::Store(position.x, df, x), hn::Store(position.y, df, y), hn::Store(position.z, df, z);
+    hn::Store(normal.x, df, nx), hn::Store(normal.y, df, ny), hn::Store(normal.z, df, nz);
+    std::uint8_t bits[8] = {};
+    hn::StoreMaskBits(df, lit, bits);
+    for (std::size_t lane = 0; lane < hn::Lanes(df); ++lane)
+        out[lane] = (bits[lane / 8] >> (lane % 8)) & 1
+                        ? shadows::visibility(*m.shadow_map, {x[lane], y[lane], z[lane]},
+                                              rl::normalize(rl::vec3{nx[lane], ny[lane], nz[lane]}),
+                                              m.shadow_lookup)
+                        : 1.0f;
+    return hn::Load(df, out);
+}
+
 // Lesson 07's NormalMappedShader::fragment() for N pixels: varyings in, RGBA
-// words out.
+// words out; with a shadow map, lesson 08's ShadowedShader::fragment().
 HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]) {
     // Lesson 05's fragment_at: b . (varyings / w) times 1 / (b . 1/w).
     const VF inverse_w = hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.inverse_w[0])),
@@ -150,7 +173,9 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
     Vec3 diffuse = broadcast(df, m.ambient);
     Vec3 specular{hn::Zero(df), hn::Zero(df), hn::Zero(df)};
     const Vec3 specular_colour = broadcast(df, m.specular_colour);
-    for (int i = 0; i < m.lights; ++i) {
+    for (int k = 0; k < m.lights; ++k) {
+        // With shadows, lesson 08's order: the other lights, then the key light (light 0).
+        const int i = m.shadow_map ? (k + 1) % m.lights : k;
         const Vec3 l = broadcast(df, m.light_direction[i]);
         const Vec3 colour = broadcast(df, m.light_colour[i]);
         const VF n_dot_l = dot(n, l);
@@ -160,11 +185,14 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
             m.blinn ? dot(n, normalize(df, add(l, to_eye)))
                     : dot(sub(scale(n, hn::Mul(hn::Set(df, 2.0f), n_dot_l)), l), to_eye);
         const VF strength = highlight(df, alignment, m.shininess);
-        const Vec3 d = scale(colour, n_dot_l);
-        const Vec3 s =
-            scale({hn::Mul(colour.x, specular_colour.x), hn::Mul(colour.y, specular_colour.y),
-                   hn::Mul(colour.z, specular_colour.z)},
-                  strength);
+        Vec3 d = scale(colour, n_dot_l);
+        Vec3 s = scale({hn::Mul(colour.x, specular_colour.x), hn::Mul(colour.y, specular_colour.y),
+                        hn::Mul(colour.z, specular_colour.z)},
+                       strength);
+        if (i == 0 && m.shadow_map) {  // the offset goes along the interpolated normal
+            const VF reaching = light_reaching(df, m, position, normal, lit);
+            d = scale(d, reaching), s = scale(s, reaching);
+        }
         diffuse = select(lit, add(diffuse, d), diffuse);
         specular = select(lit, add(specular, s), specular);
     }
