@@ -87,6 +87,7 @@ HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
 // others (no light there to take away). Lane by lane, in scalar code: each
 // lane's filter reads its own few texels, scattered over the map, and
 // lesson 08's function is the definition the picture must keep.
+// [doc:light-reaching]
 HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, const Vec3& normal,
                              MF lit) {
     alignas(64) float x[hn::MaxLanes(df)], y[hn::MaxLanes(df)], z[hn::MaxLanes(df)];
@@ -104,6 +105,7 @@ HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, con
                         : 1.0f;
     return hn::Load(df, out);
 }
+// [/doc:light-reaching]
 
 // Lesson 07's NormalMappedShader::fragment() for N pixels: varyings in, RGBA
 // words out; with a shadow map, lesson 08's ShadowedShader::fragment().
@@ -189,10 +191,12 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
         Vec3 s = scale({hn::Mul(colour.x, specular_colour.x), hn::Mul(colour.y, specular_colour.y),
                         hn::Mul(colour.z, specular_colour.z)},
                        strength);
+        // [doc:shadowed-key-light]
         if (i == 0 && m.shadow_map) {  // the offset goes along the interpolated normal
             const VF reaching = light_reaching(df, m, position, normal, lit);
             d = scale(d, reaching), s = scale(s, reaching);
         }
+        // [/doc:shadowed-key-light]
         diffuse = select(lit, add(diffuse, d), diffuse);
         specular = select(lit, add(specular, s), specular);
     }

@@ -22,7 +22,7 @@
 namespace viewer {
 
 // Which renderer draws the frame: lesson 12's fast path, lesson 07's clear
-// one, or lesson 08's (lesson 07's with shadows: the shadows key).
+// one, or the fast path with lesson 08's shadows (the shadows key).
 enum class Path { fast, lesson07, shadows };
 inline constexpr std::array<rl::Named<Path>, 3> kPathNames = {
     {{Path::fast, "fast"}, {Path::lesson07, "lesson07"}, {Path::shadows, "shadows"}}};
@@ -60,7 +60,7 @@ enum class Key {
     move_closer,
     move_away,   // arrows: move towards or away from the target
     next_path,   // P: fast -> lesson 07 -> fast
-    shadows,     // S: shadows on (lesson 08's path) or off
+    shadows,     // S: shadows on (lesson 08's two passes, on the fast path) or off
     specular,    // M: Blinn-Phong <-> Phong
     filter,      // F: trilinear -> nearest -> bilinear -> trilinear
     normal_map,  // N: tangent -> object -> none -> tangent

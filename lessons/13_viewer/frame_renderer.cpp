@@ -38,42 +38,43 @@ normal_mapping::RenderOptions FrameRenderer::options_for(const Settings& s) cons
     return options;
 }
 
+shadows::ShadowOptions FrameRenderer::shadow_options(
+    const Settings& s, const normal_mapping::RenderOptions& options) const {
+    shadows::ShadowOptions shadowed;
+    shadowed.render = options;  // then its lights from lesson 08's key light
+    shadows::set_lights(shadowed, request_.view, request_.one_light);
+    if (light_moved(s)) {
+        shadowed.light.direction = rl::normalize(s.light);
+        shadowed.render.lighting = options.lighting;
+    }
+    return shadowed;
+}
+
 const rl::Image& FrameRenderer::render(const Settings& settings, const perspective::Camera& camera,
                                        int width, int height) {
     stats_ = {faces_, 0, 0};
     const normal_mapping::RenderOptions options = options_for(settings);
-    if (settings.path == Path::fast) {
+    if (settings.path == Path::lesson07) {
+        perspective::ColourTarget target = perspective::colour_target(width, height);
+        stats_.pixels_shaded = normal_mapping::render(models_, camera, options, target).fragments;
+        picture_ = std::move(target.colour());
+        frame_ = &picture_;
+    } else {  // the fast path, with lesson 08's two passes for shadows
         // What a rebuild depends on: not the path, the wire, the scale or the
-        // light (the renderer takes new lights as they are).
+        // light (the renderer takes new lights and a shadow map as they are).
         Settings shading = settings;
         shading.path = Path::fast, shading.wireframe = false, shading.scale = 1;
-        shading.light = fast_settings_.light;
+        shading.light = {};
         if (!fast_ || !(shading == fast_settings_) || width != fast_width_ ||
             height != fast_height_) {
             fast::FastOptions o;
             o.render = options;
             fast_ = std::make_unique<fast::Renderer>(models_, width, height, o);
-            fast_settings_ = shading, fast_settings_.light = settings.light;
+            fast_settings_ = shading;
             fast_width_ = width, fast_height_ = height;
-        } else if (!(settings.light == fast_settings_.light)) {
-            fast_->set_lighting(options.lighting);
-            fast_settings_.light = settings.light;
         }
-        stats_.pixels_shaded = fast_->render(camera).tiles.shaded;
-        frame_ = &fast_->frame();
-    } else {
-        perspective::ColourTarget target = perspective::colour_target(width, height);
-        perspective::PipelineCounts counts;
-        if (settings.path == Path::lesson07) {
-            counts = normal_mapping::render(models_, camera, options, target);
-        } else {
-            shadows::ShadowOptions shadowed;
-            shadowed.render = options;  // then its lights from lesson 08's key light
-            shadows::set_lights(shadowed, request_.view, request_.one_light);
-            if (light_moved(settings)) {
-                shadowed.light.direction = rl::normalize(settings.light);
-                shadowed.render.lighting = options.lighting;
-            }
+        if (settings.path == Path::shadows) {
+            const shadows::ShadowOptions shadowed = shadow_options(settings, options);
             const float aspect = static_cast<float>(width) / static_cast<float>(height);
             // The map's options never change in the viewer: the pass is built once.
             if (!shadow_pass_)
@@ -84,11 +85,14 @@ const rl::Image& FrameRenderer::render(const Settings& settings, const perspecti
             stats_.shadow_map_ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                     .count();
-            counts = shadows::render(models_, camera, shadowed, map, target);
+            fast_->set_lighting(shadowed.render.lighting);
+            fast_->set_shadow_map(&map, shadowed.lookup);
+        } else {
+            fast_->set_lighting(options.lighting);
+            fast_->set_shadow_map(nullptr);
         }
-        stats_.pixels_shaded = counts.fragments;
-        picture_ = std::move(target.colour());
-        frame_ = &picture_;
+        stats_.pixels_shaded = fast_->render(camera).tiles.shaded;
+        frame_ = &fast_->frame();
     }
     if (settings.wireframe) {
         if (frame_ != &picture_) picture_ = *frame_;

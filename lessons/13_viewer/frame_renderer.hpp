@@ -3,9 +3,10 @@
 // framebuffer's size, with the wireframe over it if asked, lit from the
 // settings' light. The fast renderer is kept between frames and built again
 // only when the size or a shading option changes (a moved light is not one).
-// With shadows, the shadow map's pass is the fast path's (the same map as
-// lesson 08's, texel for texel, kept between frames), then lesson 08's
-// second pass draws the picture.
+// With shadows, both of lesson 08's passes run on the fast path: the shadow
+// map's (the same map as lesson 08's, texel for texel, kept between frames),
+// then the picture, its key light scaled by lesson 08's lookup in the map
+// (within one level of lesson 08's picture).
 //
 //   viewer::FrameRenderer renderer(scene.models, request);
 //   const rl::Image& frame = renderer.render(settings, camera, 800, 600);
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "07_normal_mapping/scene.hpp"
+#include "08_shadows/scene.hpp"
 #include "12_fast/renderer.hpp"
 #include "12_fast/shadow_pass.hpp"
 #include "controls.hpp"
@@ -41,6 +43,9 @@ class FrameRenderer {
   private:
     normal_mapping::RenderOptions options_for(const Settings& settings) const;
     bool light_moved(const Settings& settings) const;  // from --light's direction
+    // Lesson 08's options as its program makes them from the view, lit from the settings' light.
+    shadows::ShadowOptions shadow_options(const Settings& settings,
+                                          const normal_mapping::RenderOptions& options) const;
 
     const std::vector<normal_mapping::MappedModel>& models_;
     normal_mapping::MappedView request_;

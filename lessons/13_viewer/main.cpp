@@ -1,5 +1,5 @@
-// Lesson 13: the viewer. Lesson 12's fast path (or lesson 07's, or lesson
-// 08's with shadows) live in a window: orbit with the mouse, switch the
+// Lesson 13: the viewer. Lesson 12's fast path (with lesson 08's shadows,
+// or lesson 07's renderer) live in a window: orbit with the mouse, switch the
 // methods with keys, watch the frame time. Read docs/13_viewer.md beside it.
 #include <SDL.h>
 
@@ -21,8 +21,8 @@
 
 int main(int argc, char** argv) {
     CLI::App app{
-        "Lesson 13, the viewer: lesson 12's fast path (or lesson 07's renderer, or lesson 08's "
-        "with shadows) live in a window; orbit, switch methods and watch the frame time."};
+        "Lesson 13, the viewer: lesson 12's fast path (with lesson 08's shadows, or lesson 07's "
+        "renderer) live in a window; orbit, switch methods and watch the frame time."};
     app.footer(viewer::key_help());
     rl::ImageOptions window{"", 800, 800};
     normal_mapping::MappedCli cli;
