@@ -39,6 +39,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
   12_shadow_pass.svg         a shadow map's block skip under a negative depth bias: bounded by the
                              unbiased nearest depth (a nearer triangle lost) or by the biased one
+  12_shadow_lookup.svg       one vector's eight pixels looked up in the shadow map: eight points,
+                             each its own 2x2 texels, where the frame's row of lanes is not a map row
   13_frame_path.svg          one frame of the viewer, from the keyboard to the window
 """
 import math
@@ -1037,6 +1039,47 @@ def shadow_pass(out):
     save(figure, out, "12_shadow_pass.svg")
 
 
+def shadow_lookup(out):
+    # A vector of 8 lanes: pixels of one block row on the floor, seen from
+    # the camera. Each lands at its own point of the shadow map, a diagonal
+    # the light's view turns and stretches; pcf2 reads the 2x2 texels
+    # around each point. The lanes' texels share no row of the map, so one
+    # vector load cannot fetch them: lane by lane, lesson 08's lookup.
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.6),
+                                         gridspec_kw={"width_ratios": [1, 1.25]})
+    for x in range(8):
+        left.add_patch(Rectangle((x, 0), 1, 1, fc=SOFT, ec=INK, lw=0.8))
+        left.text(x + 0.5, 0.5, str(x), ha="center", va="center", fontsize=8)
+    left.text(4, 1.35, "one vector: 8 lanes, 8 pixels\nof a block's row in the frame", ha="center",
+              fontsize=8)
+    left.text(4, -0.6, "per lane: position and normal\n(the interpolated varyings)", ha="center",
+              fontsize=8, color=LINE)
+    left.set_xlim(-0.3, 8.3)
+    left.set_ylim(-1.4, 2.2)
+    left.set_aspect("equal")
+    left.axis("off")
+    size = 10
+    for i in range(size + 1):
+        right.plot([0, size], [i, i], color="#cccccc", lw=0.6)
+        right.plot([i, i], [0, size], color="#cccccc", lw=0.6)
+    for lane in range(8):  # the light's view turns the row and stretches it
+        u, v = 1.3 + 1.05 * lane, 1.6 + 0.85 * lane + 0.25 * (lane % 2)
+        x0, y0 = math.floor(u - 0.5), math.floor(v - 0.5)
+        right.add_patch(Rectangle((x0, y0), 2, 2, fc="#fff4c8", ec=ACCENT, lw=0.9, alpha=0.9))
+        right.plot([u], [v], "o", color=LINE, markersize=4)
+        right.text(u + 0.15, v + 0.15, str(lane), fontsize=7, color=LINE)
+    right.set_xlim(0, size)
+    right.set_ylim(0, size)
+    right.set_aspect("equal")
+    right.set_xticks([])
+    right.set_yticks([])
+    right.set_title("the same 8 lanes in the shadow map (pcf2: the 2x2 texels around each)",
+                    fontsize=8)
+    figure.suptitle("The second pass's lookup: the lanes' texels share no row of the map, so "
+                    "each lane runs lesson 08's visibility()", fontsize=9)
+    save(figure, out, "12_shadow_lookup.svg")
+
+
 def frame_path(out):
     # The viewer's loop as boxes: the input changes plain state, the state
     # draws a frame in memory (bottom row first), and the frame goes to the
@@ -1537,7 +1580,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, shadow_pass, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 

@@ -70,7 +70,7 @@ INCLUDE = re.compile(
 VALUE = re.compile(
     r"<!-- value: (?P<spec>[^>]*?) -->(?P<body>[^<]*)<!-- /value -->",
 )
-LANGUAGES = {".cpp": "cpp", ".hpp": "cpp", ".cmake": "cmake", ".py": "python", ".sh": "bash"}
+LANGUAGES = {".cpp": "cpp", ".hpp": "cpp", ".h": "cpp", ".cmake": "cmake", ".py": "python", ".sh": "bash"}
 
 
 def region(path: pathlib.Path, name: str) -> tuple:
