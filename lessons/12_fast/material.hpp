@@ -38,6 +38,7 @@ struct Material {
     float colour[3];
     const PackedTexture* normal_map = nullptr;  // the one normal_source names
     const PackedTexture* specular_map = nullptr;
+    bool specular_in_normal_alpha = false;  // the normal map's alpha bytes hold the specular map
     // Lesson 08's second pass: the first light (the key light the map was
     // made from, directional) scaled at each pixel by what the map lets
     // through, by lesson 08's lookup; none: no shadows.

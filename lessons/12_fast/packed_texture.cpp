@@ -54,4 +54,22 @@ PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
     }
 }
 
+bool PackedTexture::take_alpha_from(const textures::MipChain& other) {
+    if (decoded || other.levels() < levels) return false;
+    for (int i = 0; i < levels; ++i)
+        if (other.level(i).width() != level_width[i] || other.level(i).height() != level_height[i])
+            return false;
+    for (int i = 0; i < levels; ++i) {
+        const rl::Image& image = other.level(i);
+        const int w = image.width(), h = image.height();
+        std::size_t at = static_cast<std::size_t>(level_offset[i]);
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x <= w; ++x, ++at)  // the row's extra texel too
+                texels[at] = (texels[at] & 0x00ffffffu) |
+                             static_cast<std::uint32_t>(image.at(x == w ? 0 : x, y).r) << 24;
+    }
+    alpha_holds_other = true;
+    return true;
+}
+
 }  // namespace fast

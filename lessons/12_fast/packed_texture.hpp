@@ -7,6 +7,7 @@
 //   const fast::PackedTexture packed(chain);   // once, outside the frame loop
 //   // texel (x, y) of level 2 (each row ends with a copy of its first texel: stride = width + 1)
 //   packed.texels[packed.level_offset[2] + y * packed.level_stride[2] + x]
+//   normals.take_alpha_from(specular_chain);  // the specular map rides in the alpha byte
 #pragma once
 
 #include <cstdint>
@@ -34,6 +35,14 @@ struct PackedTexture {
     std::int32_t level_offset[kMaxLevels], level_width[kMaxLevels], level_height[kMaxLevels],
         level_stride[kMaxLevels];
     int levels = 0;
+
+    // Puts `other`'s red channel in this texture's alpha bytes, level by
+    // level, so that one lookup of four channels reads both (the fourth is
+    // the other map's, to the bit: the same texels, weights and level).
+    // Only where the two chains have the same levels, sizes and filter use,
+    // and this texture is not decoded; returns whether it did.
+    bool take_alpha_from(const textures::MipChain& other);
+    bool alpha_holds_other = false;
 };
 
 }  // namespace fast

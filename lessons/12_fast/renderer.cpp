@@ -88,6 +88,14 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
     out.tangent_map = packed(model.maps.tangent_normals, all_levels);
     out.object_map = packed(model.maps.object_normals, all_levels);
     out.specular_map = packed(model.maps.specular, all_levels);
+    // The specular map in the normal maps' alpha bytes where their levels
+    // match: the normal's lookup then reads the specular value too, and the
+    // shader gathers no texel of the specular map (docs/12_fast.md,
+    // "Textures laid out for the gathers"). Kept on its own as well, for
+    // frames without a normal map.
+    if (options.specular_in_normal_alpha && model.maps.specular)
+        for (PackedTexture* normals : {out.tangent_map.get(), out.object_map.get()})
+            if (normals) normals->take_alpha_from(*model.maps.specular);
     return out;
 }
 
@@ -247,6 +255,8 @@ struct Renderer::Impl {
             out.normal_map = m.object_map.get();
         }
         out.specular_map = m.specular_map.get();
+        out.specular_in_normal_alpha =
+            out.specular_map && out.normal_map && out.normal_map->alpha_holds_other;
         out.shadow_map = shadow_map;
         out.shadow_lookup = shadow_lookup;
         return out;

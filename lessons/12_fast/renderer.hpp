@@ -42,8 +42,9 @@ struct FastOptions {
     normal_mapping::RenderOptions render;  // lesson 07's shading options and its pipeline's
     // The techniques, for the lab to turn off one at a time:
     bool vertex_cache = true;  // the vertex function once per distinct vertex, not per corner
-    bool parallel = true;      // the vertex stage and the tiles on the threads (or on one)
-    Techniques techniques;     // the tile kernels' (tile_kernels.hpp)
+    bool specular_in_normal_alpha = true;  // the specular map read by the normal map's lookups
+    bool parallel = true;   // the vertex stage and the tiles on the threads (or on one)
+    Techniques techniques;  // the tile kernels' (tile_kernels.hpp)
     // A shadow map's pass (lesson 08's first pass) rather than a picture:
     // render_depth() only, no textures packed, no lights. The pipeline's
     // cull and max_overdraw (per model, as lesson 08 counts it) are the

@@ -69,7 +69,8 @@ HWY_INLINE Vec3 broadcast(DF df, const float* v) {
 // A texel's channels as values in [0, 1]: byte / 255, or for a decoded
 // texture the 16-bit values.
 struct Texel {
-    VF c[3];
+    VF c[4];
+    explicit Texel(DF df) : c{hn::Zero(df), hn::Zero(df), hn::Zero(df), hn::Zero(df)} {}
 };
 struct Fetched {
     VU word, blue;  // blue: decoded textures only
@@ -152,7 +153,7 @@ HWY_INLINE Texel sample_level(DF df, const PackedTexture& t, VI level, VF u, VF 
     // to_texels: the coordinate's fraction, times the size.
     const VF s = hn::Mul(hn::Sub(u, hn::Floor(u)), w);
     const VF tt = hn::Mul(hn::Sub(v, hn::Floor(v)), h);
-    Texel out;
+    Texel out(df);
     if (!bilinear) {
         const VI i = wrap(hn::ConvertTo(di, hn::Floor(s)), width);
         const VI j = wrap(hn::ConvertTo(di, hn::Floor(tt)), height);
@@ -191,7 +192,7 @@ HWY_INLINE Texel sample(DF df, const PackedTexture& t, VF u, VF v, VF du_dx, VF 
     const DI di;
     const MF finite = hn::And(hn::IsFinite(u), hn::IsFinite(v));
     u = hn::IfThenElseZero(finite, u), v = hn::IfThenElseZero(finite, v);
-    Texel out;
+    Texel out(df);
     if (filter != textures::Filter::trilinear) {
         out =
             sample_level(df, t, hn::Zero(di), u, v, filter == textures::Filter::bilinear, channels);

@@ -135,9 +135,11 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
 
     // normal_at(): the map's normal, or the interpolated one.
     Vec3 n = normalize(df, normal);
+    VF specular_texel = hn::Zero(df);  // the specular map's, read with the normal map
     if (m.normal_source != NormalSource::interpolated) {
-        const Texel texel =
-            sample(df, *m.normal_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 3);
+        const Texel texel = sample(df, *m.normal_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter,
+                                   m.specular_in_normal_alpha ? 4 : 3);
+        if (m.specular_in_normal_alpha) specular_texel = texel.c[3];
         const VF two = hn::Set(df, 2.0f), one = hn::Set(df, 1.0f);
         const Vec3 map{hn::Sub(hn::Mul(two, texel.c[0]), one),
                        hn::Sub(hn::Mul(two, texel.c[1]), one),
@@ -207,7 +209,9 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
         const VF peak = hn::Max(hn::Max(specular.x, specular.y), specular.z);
         const MF bright = hn::Ge(peak, hn::Set(df, 1e-4f));
         shine = hn::Zero(df);
-        if (!hn::AllFalse(df, bright)) {
+        if (m.specular_in_normal_alpha) {
+            shine = hn::IfThenElseZero(bright, specular_texel);
+        } else if (!hn::AllFalse(df, bright)) {
             const Texel s =
                 sample(df, *m.specular_map, u, vv, du_dx, dv_dx, du_dy, dv_dy, m.filter, 1);
             shine = hn::IfThenElseZero(bright, s.c[0]);
