@@ -39,6 +39,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
   12_shadow_pass.svg         a shadow map's block skip under a negative depth bias: bounded by the
                              unbiased nearest depth (a nearer triangle lost) or by the biased one
+  12_texel_words.svg         a packed texel's 32-bit word: the normal map's RGB and, in its alpha
+                             byte, the specular map's value; a pixel's gathers before and after
   12_shadow_lookup.svg       one vector's eight pixels looked up in the shadow map: eight points,
                              each its own 2x2 texels, where the frame's row of lanes is not a map row
   13_frame_path.svg          one frame of the viewer, from the keyboard to the window
@@ -1039,6 +1041,43 @@ def shadow_pass(out):
     save(figure, out, "12_shadow_pass.svg")
 
 
+def texel_words(out):
+    # Left: the two maps' words of one texel, and the one word that holds
+    # both. Right: the gathers one vector of pixels makes when its lanes
+    # need two mip levels (trilinear), per texture, before and after.
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.4),
+                                         gridspec_kw={"width_ratios": [1.3, 1]})
+    rows = [(2.4, "normal map", ["R: n.x", "G: n.y", "B: n.z", "A: unused"], [SOFT] * 3 + ["#eeeeee"]),
+            (1.4, "specular map", ["R: shine", "G", "B", "A"], ["#fff4c8"] + ["#eeeeee"] * 3),
+            (0.0, "packed", ["R: n.x", "G: n.y", "B: n.z", "A: shine"], [SOFT] * 3 + ["#fff4c8"])]
+    for y, name, cells, colours in rows:
+        left.text(-0.2, y + 0.3, name, ha="right", va="center", fontsize=8)
+        for i, (text, colour) in enumerate(zip(cells, colours)):
+            left.add_patch(Rectangle((i * 1.4, y), 1.4, 0.6, fc=colour, ec=INK, lw=0.8))
+            left.text(i * 1.4 + 0.7, y + 0.3, text, ha="center", va="center", fontsize=7.5)
+    left.annotate("", xy=(4.9, 0.6), xytext=(0.7, 1.4), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1))
+    left.text(2.8, -0.45, "bits 0-7, 8-15, 16-23, 24-31 of one 32-bit word", ha="center", fontsize=7.5,
+              color=LINE)
+    left.set_xlim(-2.0, 5.8)
+    left.set_ylim(-0.7, 3.2)
+    left.axis("off")
+    left.set_title("one texel, as the gathers load it", fontsize=9)
+    textures = ["albedo\n(decoded: 2 words)", "normal map", "specular map"]
+    before, after = [16, 8, 8], [16, 8, 0]
+    x = range(len(textures))
+    right.bar([i - 0.18 for i in x], before, width=0.36, color="#bbbbbb", label="before")
+    right.bar([i + 0.18 for i in x], after, width=0.36, color=LINE, label="specular in the alpha")
+    right.set_xticks(list(x))
+    right.set_xticklabels(textures, fontsize=7.5)
+    right.set_ylabel("gather instructions per vector of pixels", fontsize=8)
+    right.tick_params(labelsize=7)
+    right.legend(fontsize=7)
+    right.set_title("trilinear, two levels: 32 gathers -> 24", fontsize=9)
+    figure.suptitle("The specular map in the normal map's alpha byte: one lookup reads both",
+                    fontsize=10)
+    save(figure, out, "12_texel_words.svg")
+
+
 def shadow_lookup(out):
     # A vector of 8 lanes: pixels of one block row on the floor, seen from
     # the camera. Each lands at its own point of the shadow map, a diagonal
@@ -1580,7 +1619,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, texel_words, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 
