@@ -7,10 +7,11 @@
 //      after another turned on, at 1024x1024, on two scenes;
 //   2. 12_sizes.csv: 512^2 to 4096^2, four scenes (lesson 07's, the globe
 //      filling the frame, and spheres of about 200 thousand and a million
-//      triangles with the globe's maps): ours on 1 and 2 threads, llvmpipe
-//      doing our shader's work and a plain llvmpipe (one light, the colour
-//      map), lesson 07 (its scene), and the floor: clearing colour and depth
-//      and writing every pixel once;
+//      triangles with the globe's maps): ours, llvmpipe doing our shader's
+//      work and a plain llvmpipe (one light, the colour map), each on 2
+//      threads and on 1 (the one-thread cells in a second run of the lab:
+//      lab/one_thread_run.hpp), lesson 07 (its scene), and the floor:
+//      clearing colour and depth and writing every pixel once;
 //   3. 12_triangles.csv: the sphere from 2 thousand to 2 million triangles
 //      at 1024x1024, ours and llvmpipe;
 //   4. 12_stages.csv: where the fast path's time goes.
@@ -25,12 +26,14 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "05_perspective/view_options.hpp"
 #include "06_shading/lab/sphere_truth.hpp"
 #include "12_fast/orbit.hpp"
 #include "12_fast/renderer.hpp"
 #include "hwy/targets.h"
+#include "one_thread_run.hpp"
 #include "rasterlab/image_metrics.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
@@ -90,10 +93,11 @@ perspective::Camera filling_the_frame() {
 struct Cell {
     const Scene* scene;
     int size;
-    std::string renderer;       // "fast", "lesson 07", "llvmpipe", "llvmpipe plain", "floor"
-    fast::FastOptions options;  // for "fast"
-    std::int64_t simd = 0;      // a Highway target to run with (0: the best)
-    std::string name;           // the benchmark's
+    std::string renderer;         // "fast", "lesson 07", "llvmpipe", "llvmpipe plain", "floor"
+    fast::FastOptions options;    // for "fast"
+    std::int64_t simd = 0;        // a Highway target to run with (0: the best)
+    std::string name;             // the benchmark's
+    int peer_threads = kThreads;  // for "llvmpipe" and "llvmpipe plain"
 };
 
 void time_fast(benchmark::State& state, const Cell* c) {
@@ -147,7 +151,7 @@ void time_floor(benchmark::State& state, const Cell* c) {
 #ifdef RASTERLAB_LLVMPIPE
 void time_llvmpipe(benchmark::State& state, const Cell* c) {
     fast::LlvmpipePeer peer(
-        c->size, c->size, kThreads,
+        c->size, c->size, c->peer_threads,
         c->renderer == "llvmpipe plain" ? fast::PeerShader::plain : fast::PeerShader::same_work);
     peer.upload(c->scene->models, c->options.render);
     peer.render(c->scene->camera);  // the first frame compiles the shaders
@@ -157,16 +161,18 @@ void time_llvmpipe(benchmark::State& state, const Cell* c) {
 }
 #endif
 
-bool peer_available() {
+// `threads`: the peer's in this process, from its first context on.
+bool peer_available(int threads) {
 #ifdef RASTERLAB_LLVMPIPE
     try {
-        fast::LlvmpipePeer probe(8, 8, kThreads);
+        fast::LlvmpipePeer probe(8, 8, threads);
         return true;
     } catch (const fast::PeerUnavailable& e) {
         std::printf("llvmpipe peer skipped: %s\n", e.what());
         return false;
     }
 #else
+    (void)threads;
     std::printf(
         "llvmpipe peer skipped: this build has none (OSMesa, libosmesa6-dev, missing; or a "
         "sanitized build)\n");
@@ -256,12 +262,15 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
 }  // namespace
 
 int main(int argc, char** argv) {
+    // The one-thread cells' run (a child of the lab's own run), or the lab.
+    const bool one_thread_run = fast::lab::take_one_thread_flag(argc, argv);
+    const std::vector<std::string> arguments(argv + 1, argv + argc);
     const rl::lab::Options options = rl::lab::init(
         argc, argv,
         "Lesson 12's lab: the fast path, technique by technique, against lesson 07 and Mesa's "
         "llvmpipe. Writes 12_steps.csv, 12_sizes.csv, 12_triangles.csv and 12_stages.csv.");
     return rl::guarded_main("12_fast_lab", [&] {
-        const bool peer = peer_available();
+        const bool peer = peer_available(one_thread_run ? 1 : kThreads);
         std::vector<std::string> warnings;
         std::vector<Scene> scenes;
         scenes.push_back(
@@ -298,7 +307,7 @@ int main(int argc, char** argv) {
         // 1. The steps, on lesson 07's scene and on the globe.
         std::vector<std::pair<const Cell*, std::string>> step_cells;  // cell, its step's label
         const std::vector<Step> ladder = steps(scalar, simd_sets);
-        for (int k = 0; k < 2; ++k) {
+        for (int k = 0; k < (one_thread_run ? 0 : 2); ++k) {
             const Scene& s = scenes[static_cast<std::size_t>(k)];
             step_cells.push_back(
                 {add(s, step_size, "lesson 07", {}, 0, "step/lesson 07"), "lesson 07"});
@@ -310,23 +319,38 @@ int main(int argc, char** argv) {
                 step_cells.push_back(
                     {add(s, step_size, "llvmpipe", {}, 0, "step/llvmpipe"), "llvmpipe, 2 threads"});
         }
-        // 2. The sizes.
+        // 2. The sizes. The one-thread cells (ours, llvmpipe's) are timed
+        // in the lab's second run, named alike there and here.
         fast::FastOptions one_thread;
         one_thread.threads = 1;
         std::vector<const Cell*> size_cells;
+        std::vector<Cell*> one_thread_cells;
         for (const Scene& s : scenes)
             for (int size : sizes) {
                 size_cells.push_back(add(s, size, "fast", {}, 0, "fast, 2 threads"));
-                size_cells.push_back(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
+                one_thread_cells.push_back(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
                 if (peer) {
                     size_cells.push_back(add(s, size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
                     size_cells.push_back(
                         add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 2 threads"));
+                    one_thread_cells.push_back(
+                        add(s, size, "llvmpipe", {}, 0, "llvmpipe, 1 thread"));
+                    one_thread_cells.push_back(
+                        add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 1 thread"));
+                    one_thread_cells.back()->peer_threads = 1;
+                    one_thread_cells.end()[-2]->peer_threads = 1;
                 }
+                size_cells.insert(size_cells.end(), one_thread_cells.end() - (peer ? 3 : 1),
+                                  one_thread_cells.end());
                 size_cells.push_back(add(s, size, "floor", {}, 0, "floor"));
                 if (&s == &scenes[0])
                     size_cells.push_back(add(s, size, "lesson 07", {}, 0, "lesson 07, 1 thread"));
             }
+        if (one_thread_run) {  // the child: these cells alone
+            for (Cell* c : one_thread_cells) register_cell(*c);
+            fast::lab::write_one_thread_timings(rl::lab::run_benchmarks(), options.out_dir);
+            return 0;
+        }
         // 3. The triangle counts.
         std::vector<Scene> spheres;
         const std::vector<int> segments = options.quick
@@ -344,8 +368,11 @@ int main(int argc, char** argv) {
                 triangle_cells.push_back(
                     add(s, step_size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
         }
-        for (auto& c : cells) register_cell(*c);
-        const auto timings = rl::lab::run_benchmarks();
+        const std::set<const Cell*> in_child(one_thread_cells.begin(), one_thread_cells.end());
+        for (auto& c : cells)
+            if (!in_child.count(c.get())) register_cell(*c);
+        std::map<std::string, rl::lab::Timing> timings = rl::lab::run_benchmarks();
+        timings.merge(fast::lab::run_one_thread_child(arguments, options.out_dir));
         const auto ms = [&](const Cell* c) { return timings.at(c->name).median_ns / 1e6; };
         const auto ms_min = [&](const Cell* c) { return timings.at(c->name).min_ns / 1e6; };
         const auto ms_max = [&](const Cell* c) { return timings.at(c->name).max_ns / 1e6; };
@@ -368,16 +395,23 @@ int main(int argc, char** argv) {
                                  lesson07_ms.at(c->scene) / ms(c),
                                  static_cast<long long>(d.max_abs), 100 * d.share_over});
         }
-        // 2. The sizes: each against the floor, ours against llvmpipe.
-        // The ratios to llvmpipe are at equal threads for ours on two.
+        // 2. The sizes: each against the floor (on 2 threads), ours against
+        // llvmpipe on as many threads as ours.
         rl::ResultsTable sizes_table({"scene", "size", "renderer", "ms_per_frame", "ms_min",
                                       "ms_max", "times_the_floor", "times_llvmpipe",
                                       "times_plain_llvmpipe", "percent_differing_from_llvmpipe"});
-        std::map<std::pair<const Scene*, int>, double> floor_ms, peer_ms, plain_ms;
+        using Key = std::tuple<const Scene*, int, int>;  // scene, size, threads
+        const auto key_of = [](const Cell* c) {
+            const int threads =
+                c->renderer == "fast" ? (c->options.threads == 1 ? 1 : kThreads) : c->peer_threads;
+            return Key{c->scene, c->size, threads};
+        };
+        std::map<std::pair<const Scene*, int>, double> floor_ms;
+        std::map<Key, double> peer_ms, plain_ms;
         for (const Cell* c : size_cells) {
             if (c->renderer == "floor") floor_ms[{c->scene, c->size}] = ms(c);
-            if (c->renderer == "llvmpipe") peer_ms[{c->scene, c->size}] = ms(c);
-            if (c->renderer == "llvmpipe plain") plain_ms[{c->scene, c->size}] = ms(c);
+            if (c->renderer == "llvmpipe") peer_ms[key_of(c)] = ms(c);
+            if (c->renderer == "llvmpipe plain") plain_ms[key_of(c)] = ms(c);
         }
         std::map<std::pair<const Scene*, int>, double> differing;
         if (peer)
@@ -393,8 +427,8 @@ int main(int argc, char** argv) {
             sizes_table.add_row({c->scene->name, static_cast<long long>(c->size),
                                  c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
                                  ms_max(c), ms(c) / floor_ms.at(key),
-                                 ours && peer ? ms(c) / peer_ms.at(key) : NAN,
-                                 ours && peer ? ms(c) / plain_ms.at(key) : NAN,
+                                 ours && peer ? ms(c) / peer_ms.at(key_of(c)) : NAN,
+                                 ours && peer ? ms(c) / plain_ms.at(key_of(c)) : NAN,
                                  ours && peer ? differing.at(key) : NAN});
         }
         // 3. The triangle counts.
