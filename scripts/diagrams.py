@@ -42,7 +42,7 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_texel_words.svg         a packed texel's 32-bit word: the normal map's RGB and, in its alpha
                              byte, the specular map's value; a pixel's gathers before and after
   12_shadow_lookup.svg       one vector's eight pixels looked up in the shadow map: eight points,
-                             each its own 2x2 texels, where the frame's row of lanes is not a map row
+                             each with its own 2x2 texels, scattered over the map
   13_frame_path.svg          one frame of the viewer, from the keyboard to the window
 """
 import math
@@ -1079,17 +1079,17 @@ def texel_words(out):
 
 
 def shadow_lookup(out):
-    # A vector of 8 lanes: pixels of one block row on the floor, seen from
-    # the camera. Each lands at its own point of the shadow map, a diagonal
+    # A vector of 8 lanes: pixels of a triangle on the floor, from the lane
+    # queue. Each lands at its own point of the shadow map, along a diagonal
     # the light's view turns and stretches; pcf2 reads the 2x2 texels
-    # around each point. The lanes' texels share no row of the map, so one
-    # vector load cannot fetch them: lane by lane, lesson 08's lookup.
+    # around each point. The lanes' texels are scattered, not one run of a
+    # row that a vector load could fetch: lane by lane, lesson 08's lookup.
     figure, (left, right) = plt.subplots(1, 2, figsize=(8.6, 3.6),
                                          gridspec_kw={"width_ratios": [1, 1.25]})
     for x in range(8):
         left.add_patch(Rectangle((x, 0), 1, 1, fc=SOFT, ec=INK, lw=0.8))
         left.text(x + 0.5, 0.5, str(x), ha="center", va="center", fontsize=8)
-    left.text(4, 1.35, "one vector: 8 lanes, 8 pixels\nof a block's row in the frame", ha="center",
+    left.text(4, 1.35, "one vector: 8 lanes (AVX2), 8 pixels\nof a triangle, from the lane queue", ha="center",
               fontsize=8)
     left.text(4, -0.6, "per lane: position and normal\n(the interpolated varyings)", ha="center",
               fontsize=8, color=LINE)
@@ -1114,7 +1114,7 @@ def shadow_lookup(out):
     right.set_yticks([])
     right.set_title("the same 8 lanes in the shadow map (pcf2: the 2x2 texels around each)",
                     fontsize=8)
-    figure.suptitle("The second pass's lookup: the lanes' texels share no row of the map, so "
+    figure.suptitle("The second pass's lookup: each lane's texels lie in its own place of the map; "
                     "each lane runs lesson 08's visibility()", fontsize=9)
     save(figure, out, "12_shadow_lookup.svg")
 

@@ -33,7 +33,10 @@ docs/charts/ by the row whose columns have the given values:
 
 (on one line). Optional last parts: `x=100` multiplies the number (per
 million to per cent: `x=0.0001`), `fmt=.1f` formats it with Python's format
-spec (`fmt=.0f`, `fmt=,.0f`, `fmt=.2g`).
+spec (`fmt=.0f`, `fmt=,.0f`, `fmt=.2g`), `agg=min` or `agg=max` takes the
+least or greatest of the column over every row that matches (a range
+"lo–hi" across sizes is two such values). A condition can also bound a
+numeric column: `size>=1024`, `size<=2048`.
 
 --check (the default) fails when a page's copy or value is stale, names a
 region, table, row or column that does not exist, or when a marked source
@@ -128,23 +131,43 @@ def table_rows(path: pathlib.Path) -> list:
 def value(match: re.Match) -> str:
     # Inside a Markdown table a marker separates its fields with "\|", as a
     # bare "|" would split the table's cell.
+    # Conditions are key=value, or key>=number and key<=number for a range
+    # of rows; agg=min or agg=max takes the least or the greatest of the
+    # column over the rows (a range quoted as "lo–hi" is two such values).
     parts = [p.strip() for p in re.split(r"\\?\|", match.group("spec"))]
     options = {}
-    while parts and parts[-1].split("=", 1)[0] in ("fmt", "x"):
+    while parts and parts[-1].split("=", 1)[0] in ("fmt", "x", "agg"):
         key, text = parts.pop().split("=", 1)
         options[key] = text
     table, *conditions, column = parts
     source = ROOT / table
     if not source.is_file():
         raise LookupError(f"no table {table} for a value")
-    wanted = dict(c.split("=", 1) for c in conditions)
-    rows = [r for r in table_rows(source) if all(r.get(k) == v for k, v in wanted.items())]
-    if len(rows) != 1:
-        raise LookupError(f"{len(rows)} rows of {table} match {wanted} (need exactly one)")
+    tests = []
+    for condition in conditions:
+        bound = re.fullmatch(r"(.+?)(>=|<=)(.+)", condition)
+        if bound:
+            key, sign, limit = bound.group(1), bound.group(2), float(bound.group(3))
+            tests.append(lambda r, k=key, s=sign, v=limit: k in r and (
+                float(r[k]) >= v if s == ">=" else float(r[k]) <= v))
+        else:
+            key, wanted = condition.split("=", 1)
+            tests.append(lambda r, k=key, v=wanted: r.get(k) == v)
+    rows = [r for r in table_rows(source) if all(test(r) for test in tests)]
+    aggregate = options.pop("agg", None)
+    if aggregate not in (None, "min", "max"):
+        raise LookupError(f"agg={aggregate}: only min or max")
+    if not rows or (len(rows) != 1 and aggregate is None):
+        raise LookupError(f"{len(rows)} rows of {table} match {conditions} (need exactly one,"
+                          " or agg=min or agg=max)")
     if column not in rows[0]:
         raise LookupError(f"{table} has no column {column}")
-    text = rows[0][column]
-    if options:
+    if aggregate:
+        numbers = [float(r[column]) for r in rows]
+        text = repr(min(numbers) if aggregate == "min" else max(numbers))
+    else:
+        text = rows[0][column]
+    if options or aggregate:
         number = float(text) * float(options.get("x", "1"))
         text = format(number, options.get("fmt", "g"))
     return f"<!-- value: {match.group('spec')} -->{text}<!-- /value -->"

@@ -174,7 +174,7 @@ HWY_INLINE BlockRange blocks_of(const FastTriangle& t, const TileWork& work) {
 // The visibility pass: depth and the id of the nearest triangle at every
 // pixel (or, without shade_once, each passing pixel shaded at once, as
 // lesson 07 does).
-HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]);
+HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3], MF active);
 
 void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DF df;
@@ -237,7 +237,7 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                     // [/doc:depth-pass]
                     if (!use.shade_once) {
                         std::uint32_t* colour = buffers.colour.get() + base + first;
-                        const VU rgba = shade(df, work.materials[t.model], t, b);
+                        const VU rgba = shade(df, work.materials[t.model], t, b, pass);
                         hn::Store(hn::IfThenElse(pass_u, rgba, hn::Load(du, colour)), du, colour);
                         counts.shaded += hn::CountTrue(df, pass);
                         counts.lanes += n;

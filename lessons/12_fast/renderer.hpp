@@ -42,7 +42,10 @@ struct FastOptions {
     normal_mapping::RenderOptions render;  // lesson 07's shading options and its pipeline's
     // The techniques, for the lab to turn off one at a time:
     bool vertex_cache = true;  // the vertex function once per distinct vertex, not per corner
-    bool specular_in_normal_alpha = true;  // the specular map read by the normal map's lookups
+    // The specular map in the normal maps' alpha bytes where their levels
+    // match, read by the normal map's lookups (docs/12_fast.md, "Textures
+    // laid out for the gathers").
+    bool specular_in_normal_alpha = true;
     bool parallel = true;   // the vertex stage and the tiles on the threads (or on one)
     Techniques techniques;  // the tile kernels' (tile_kernels.hpp)
     // A shadow map's pass (lesson 08's first pass) rather than a picture:

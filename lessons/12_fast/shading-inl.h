@@ -83,9 +83,10 @@ HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
                           hn::Set(di, 255), b);
 }
 
-// Lesson 08's visibility() at each lane the key light reaches, 1 at the
-// others (no light there to take away). Lane by lane, in scalar code: each
-// lane's filter reads its own few texels, scattered over the map, and
+// Lesson 08's visibility() at each lane of `lit` (a kept lane the key light
+// reaches), 1 at the others (no light there to take away, or a colour thrown
+// away). Lane by lane, in scalar code: each filter reads its own number of
+// texels (1 to 25, clamped at the map's edge) around each lane's point, and
 // lesson 08's function is the definition the picture must keep.
 // [doc:light-reaching]
 HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, const Vec3& normal,
@@ -109,7 +110,10 @@ HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, con
 
 // Lesson 07's NormalMappedShader::fragment() for N pixels: varyings in, RGBA
 // words out; with a shadow map, lesson 08's ShadowedShader::fragment().
-HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3]) {
+// `active`: the lanes whose colours are kept (the others' are computed and
+// thrown away; only the shadow lookup, lane by lane, skips them).
+HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3],
+                      MF active) {
     // Lesson 05's fragment_at: b . (varyings / w) times 1 / (b . 1/w).
     const VF inverse_w = hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.inverse_w[0])),
                                          hn::Mul(b[1], hn::Set(df, t.inverse_w[1]))),
@@ -195,7 +199,7 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
                        strength);
         // [doc:shadowed-key-light]
         if (i == 0 && m.shadow_map) {  // the offset goes along the interpolated normal
-            const VF reaching = light_reaching(df, m, position, normal, lit);
+            const VF reaching = light_reaching(df, m, position, normal, hn::And(lit, active));
             d = scale(d, reaching), s = scale(s, reaching);
         }
         // [/doc:shadowed-key-light]

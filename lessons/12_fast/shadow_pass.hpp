@@ -6,8 +6,9 @@
 // fast path".
 //
 //   fast::ShadowPass pass(models, {.size = 2048, .slope_bias = 1});
-//   const shadows::ShadowMap& map = pass.render(shadows::light_view_for(models, camera, aspect,
-//   o)); shadows::render(models, camera, o, map, frame);  // lesson 08's second pass, with it
+//   const shadows::LightView light = shadows::light_view_for(models, camera, aspect, options);
+//   const shadows::ShadowMap& map = pass.render(light);
+//   renderer.set_shadow_map(&map, options.lookup);  // the second pass: a fast::Renderer's
 #pragma once
 
 #include "08_shadows/shadow_map.hpp"

@@ -50,7 +50,7 @@ void shade_by_chunks(const TileWork& work, TileBuffers& buffers, const FastTrian
                 if (hn::AllFalse(du, mine)) continue;
                 VF b[3];
                 weights_at(df, t, w, first, b);
-                const VU rgba = shade(df, work.materials[t.model], t, b);
+                const VU rgba = shade(df, work.materials[t.model], t, b, hn::RebindMask(df, mine));
                 counts.shaded += hn::CountTrue(du, mine);
                 counts.lanes += n;
                 hn::Store(hn::IfThenElse(mine, rgba, hn::Load(du, colour + first)), du,
@@ -94,7 +94,7 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
             const VF x = hn::Load(df, queue_x), y = hn::Load(df, queue_y);
             VF b[3];
             weights_at(df, t, w, x, y, b);
-            hn::Store(shade(df, material, t, b), du, shaded);
+            hn::Store(shade(df, material, t, b, hn::FirstN(df, count)), du, shaded);
             for (std::size_t lane = 0; lane < count; ++lane)
                 colour[queue_slot[lane]] = shaded[lane];
             counts.shaded += count;

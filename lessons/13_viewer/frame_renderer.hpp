@@ -1,7 +1,7 @@
 // What the viewer shows each frame: the scene drawn by the renderer the
-// settings name (lesson 12's fast path, lesson 07's or lesson 08's), at the
-// framebuffer's size, with the wireframe over it if asked, lit from the
-// settings' light. The fast renderer is kept between frames and built again
+// settings name (lesson 12's fast path, with or without lesson 08's shadows,
+// or lesson 07's), at the framebuffer's size, with the wireframe over it if
+// asked, lit from the settings' light. The fast renderer is kept between frames and built again
 // only when the size or a shading option changes (a moved light is not one).
 // With shadows, both of lesson 08's passes run on the fast path: the shadow
 // map's (the same map as lesson 08's, texel for texel, kept between frames),
@@ -54,7 +54,7 @@ class FrameRenderer {
     Settings fast_settings_;  // what fast_ was built for
     int fast_width_ = 0, fast_height_ = 0;
     std::unique_ptr<fast::ShadowPass> shadow_pass_;  // built at the first frame with shadows
-    rl::Image picture_;  // lessons 07 and 08 draw here (and the wireframe goes on a copy)
+    rl::Image picture_;  // lesson 07 draws here (and the wireframe goes on a copy)
     const rl::Image* frame_ = &picture_;
     FrameStats stats_;
 };

@@ -236,6 +236,7 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     o.parallel = false;
     o.threads = 1;
     o.techniques = {false, false, false, false};
+    o.specular_in_normal_alpha = false;
     std::vector<Step> out;
     out.push_back({"one thread, scalar, per corner", o, scalar});
     o.vertex_cache = true;
@@ -253,6 +254,8 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     }
     o.techniques.full_vectors = true;
     out.push_back({"+ full vectors (a triangle's pixels queued)", o, simd_sets.front()});
+    o.specular_in_normal_alpha = true;
+    out.push_back({"+ the specular map in the normal map's alpha", o, simd_sets.front()});
     o.parallel = true;
     o.threads = kThreads;
     out.push_back({"+ 2 threads: the fast path", o, simd_sets.front()});
