@@ -55,8 +55,11 @@ def test_ctrl_c_stops_a_render_between_its_steps():
 def test_ctrl_c_stops_a_frame_part_way():
     # Lesson 07 at 8192² draws for about 8 s here, after about 1 s of loading;
     # its floor alone covers millions of pixels. Stopped between bands of 64
-    # rows, it answers in well under a second (0.3 s measured).
-    latency = interrupt("rasterlab.lesson07.render(width=8192, height=8192)", 2.5)
+    # rows, it answers in well under a second (0.3 s measured). SIGINT comes
+    # 4 s in: with the other core busy (ctest -j2) the loading has taken over
+    # 2.5 s, and a SIGINT during it is answered only when it ends (1.8 s later,
+    # seen once), which is the step boundary, not the band's.
+    latency = interrupt("rasterlab.lesson07.render(width=8192, height=8192)", 4.0)
     assert latency < 1.0
 
 
