@@ -36,7 +36,7 @@ million to per cent: `x=0.0001`), `fmt=.1f` formats it with Python's format
 spec (`fmt=.0f`, `fmt=,.0f`, `fmt=.2g`), `agg=min` or `agg=max` takes the
 least or greatest of the column over every row that matches (a range
 "lo–hi" across sizes is two such values). A condition can also bound a
-numeric column: `size>=1024`, `size<=2048`.
+numeric column: `size=1024..` (1024 and up), `size=..2048`, `size=800..2048`.
 
 --check (the default) fails when a page's copy or value is stale, names a
 region, table, row or column that does not exist, or when a marked source
@@ -52,6 +52,7 @@ joins it to the line before.
 """
 import argparse
 import os
+import math
 import pathlib
 import re
 import subprocess
@@ -131,8 +132,8 @@ def table_rows(path: pathlib.Path) -> list:
 def value(match: re.Match) -> str:
     # Inside a Markdown table a marker separates its fields with "\|", as a
     # bare "|" would split the table's cell.
-    # Conditions are key=value, or key>=number and key<=number for a range
-    # of rows; agg=min or agg=max takes the least or the greatest of the
+    # Conditions are key=value, or key=lo..hi (either end may be left out)
+    # for a range of rows; agg=min or agg=max takes the least or the greatest of the
     # column over the rows (a range quoted as "lo–hi" is two such values).
     parts = [p.strip() for p in re.split(r"\\?\|", match.group("spec"))]
     options = {}
@@ -145,13 +146,13 @@ def value(match: re.Match) -> str:
         raise LookupError(f"no table {table} for a value")
     tests = []
     for condition in conditions:
-        bound = re.fullmatch(r"(.+?)(>=|<=)(.+)", condition)
-        if bound:
-            key, sign, limit = bound.group(1), bound.group(2), float(bound.group(3))
-            tests.append(lambda r, k=key, s=sign, v=limit: k in r and (
-                float(r[k]) >= v if s == ">=" else float(r[k]) <= v))
+        key, wanted = condition.split("=", 1)
+        bounds = re.fullmatch(r"(-?[\d.]*)\.\.(-?[\d.]*)", wanted)
+        if bounds:  # key=lo..hi, either end left open: a numeric range
+            lo = float(bounds.group(1)) if bounds.group(1) else -math.inf
+            hi = float(bounds.group(2)) if bounds.group(2) else math.inf
+            tests.append(lambda r, k=key, lo=lo, hi=hi: k in r and lo <= float(r[k]) <= hi)
         else:
-            key, wanted = condition.split("=", 1)
             tests.append(lambda r, k=key, v=wanted: r.get(k) == v)
     rows = [r for r in table_rows(source) if all(test(r) for test in tests)]
     aggregate = options.pop("agg", None)
