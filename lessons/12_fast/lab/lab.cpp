@@ -328,23 +328,25 @@ int main(int argc, char** argv) {
         one_thread.threads = 1;
         std::vector<const Cell*> size_cells;
         std::vector<Cell*> one_thread_cells;
+        const auto on_one_thread = [&](Cell* c) {
+            c->peer_threads = 1;  // (a "fast" cell's threads are its options')
+            one_thread_cells.push_back(c);
+            size_cells.push_back(c);
+        };
         for (const Scene& s : scenes)
             for (int size : sizes) {
                 size_cells.push_back(add(s, size, "fast", {}, 0, "fast, 2 threads"));
-                one_thread_cells.push_back(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
                 if (peer) {
                     size_cells.push_back(add(s, size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
                     size_cells.push_back(
                         add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 2 threads"));
-                    one_thread_cells.push_back(
-                        add(s, size, "llvmpipe", {}, 0, "llvmpipe, 1 thread"));
-                    one_thread_cells.push_back(
-                        add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 1 thread"));
-                    one_thread_cells.back()->peer_threads = 1;
-                    one_thread_cells.end()[-2]->peer_threads = 1;
                 }
-                size_cells.insert(size_cells.end(), one_thread_cells.end() - (peer ? 3 : 1),
-                                  one_thread_cells.end());
+                on_one_thread(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
+                if (peer) {
+                    on_one_thread(add(s, size, "llvmpipe", {}, 0, "llvmpipe, 1 thread"));
+                    on_one_thread(
+                        add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 1 thread"));
+                }
                 size_cells.push_back(add(s, size, "floor", {}, 0, "floor"));
                 if (&s == &scenes[0])
                     size_cells.push_back(add(s, size, "lesson 07", {}, 0, "lesson 07, 1 thread"));
