@@ -108,34 +108,51 @@ HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, con
 }
 // [/doc:light-reaching]
 
-// Lesson 07's NormalMappedShader::fragment() for N pixels: varyings in, RGBA
-// words out; with a shadow map, lesson 08's ShadowedShader::fragment().
-// `active`: the lanes whose colours are kept (the others' are computed and
-// thrown away; only the shadow lookup, lane by lane, skips them).
-HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3],
-                      MF active) {
+// What the shader reads of a pixel's triangle, lane by lane: lesson 05's
+// perspective-correct varyings and the uv's screen derivatives (the mip
+// level's footprint). Once interpolated, pixels of different triangles can
+// share a vector (docs/12_fast.md, "Full vectors").
+inline constexpr int kFragmentFloats = kVaryingFloats + 4;
+struct Fragments {
+    // The varyings (position, normal, tangent, handedness, u, v), then
+    // du/dx, dv/dx, du/dy, dv/dy.
+    VF value[kFragmentFloats];
+};
+
+// The fragments of N pixels of triangle `t` at weights `b`.
+HWY_INLINE Fragments interpolate(DF df, const FastTriangle& t, const VF (&b)[3]) {
+    Fragments f;
     // Lesson 05's fragment_at: b . (varyings / w) times 1 / (b . 1/w).
     const VF inverse_w = hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.inverse_w[0])),
                                          hn::Mul(b[1], hn::Set(df, t.inverse_w[1]))),
                                  hn::Mul(b[2], hn::Set(df, t.inverse_w[2])));
     const VF w = hn::Div(hn::Set(df, 1.0f), inverse_w);
-    VF v[kVaryingFloats];
     for (int c = 0; c < kVaryingFloats; ++c)
-        v[c] = hn::Mul(hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.over_w[0][c])),
-                                       hn::Mul(b[1], hn::Set(df, t.over_w[1][c]))),
-                               hn::Mul(b[2], hn::Set(df, t.over_w[2][c]))),
-                       w);
+        f.value[c] = hn::Mul(hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.over_w[0][c])),
+                                             hn::Mul(b[1], hn::Set(df, t.over_w[1][c]))),
+                                     hn::Mul(b[2], hn::Set(df, t.over_w[2][c]))),
+                             w);
+    // Lesson 05's Fragment::d_dx(&Varyings::uv): the quotient rule.
+    const VF u = f.value[10], v = f.value[11];
+    for (int axis = 0; axis < 2; ++axis) {
+        const VF minus_d_inverse_w = hn::Set(df, -t.d_inverse_w[axis]);
+        f.value[kVaryingFloats + 2 * axis] =
+            hn::Mul(hn::MulAdd(u, minus_d_inverse_w, hn::Set(df, t.d_uv_over_w[axis][0])), w);
+        f.value[kVaryingFloats + 2 * axis + 1] =
+            hn::Mul(hn::MulAdd(v, minus_d_inverse_w, hn::Set(df, t.d_uv_over_w[axis][1])), w);
+    }
+    return f;
+}
+
+// Lesson 07's NormalMappedShader::fragment() for N pixels: fragments in,
+// RGBA words out; with a shadow map, lesson 08's ShadowedShader::fragment().
+// `active`: the lanes whose colours are kept (the others' are computed and
+// thrown away; only the shadow lookup, lane by lane, skips them).
+HWY_NOINLINE VU shade(DF df, const Material& m, const Fragments& f, MF active) {
+    const VF(&v)[kFragmentFloats] = f.value;
     const Vec3 position{v[0], v[1], v[2]}, normal{v[3], v[4], v[5]}, tangent{v[6], v[7], v[8]};
     const VF handedness = v[9], u = v[10], vv = v[11];
-    // Lesson 05's Fragment::d_dx(&Varyings::uv): the quotient rule.
-    const VF du_dx =
-        hn::Mul(hn::MulAdd(u, hn::Set(df, -t.d_inverse_w[0]), hn::Set(df, t.d_uv_over_w[0][0])), w);
-    const VF dv_dx = hn::Mul(
-        hn::MulAdd(vv, hn::Set(df, -t.d_inverse_w[0]), hn::Set(df, t.d_uv_over_w[0][1])), w);
-    const VF du_dy =
-        hn::Mul(hn::MulAdd(u, hn::Set(df, -t.d_inverse_w[1]), hn::Set(df, t.d_uv_over_w[1][0])), w);
-    const VF dv_dy = hn::Mul(
-        hn::MulAdd(vv, hn::Set(df, -t.d_inverse_w[1]), hn::Set(df, t.d_uv_over_w[1][1])), w);
+    const VF du_dx = v[12], dv_dx = v[13], du_dy = v[14], dv_dy = v[15];
 
     // normal_at(): the map's normal, or the interpolated one.
     Vec3 n = normalize(df, normal);
@@ -239,6 +256,13 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF 
     (void)di;
     return hn::Or(hn::Or(red, hn::ShiftLeft<8>(green)),
                   hn::Or(hn::ShiftLeft<16>(blue), hn::Set(du, 0xff000000u)));
+}
+
+// The same for N pixels of one triangle at weights `b` (the paths that
+// shade a triangle's pixels where it covers them).
+HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3],
+                      MF active) {
+    return shade(df, m, interpolate(df, t, b), active);
 }
 
 }  // namespace HWY_NAMESPACE

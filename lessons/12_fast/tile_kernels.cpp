@@ -59,10 +59,49 @@ void shade_by_chunks(const TileWork& work, TileBuffers& buffers, const FastTrian
         }
 }
 
+// Pixels waiting for the shader: their fragments (interpolated, so that
+// pixels of different triangles of one model can share a vector) and the
+// tile slots their colours go to. Room for a vector more than it ever
+// keeps, as each append writes whole vectors.
+struct FragmentQueue {
+    static constexpr std::size_t kRoom = 2 * hn::MaxLanes(DF());
+    alignas(64) float value[kFragmentFloats][kRoom] = {};
+    alignas(64) std::uint32_t slot[kRoom] = {};
+    std::size_t size = 0;
+    std::uint32_t model = 0;  // whose material shades them
+
+    // The first `count` lanes of `f` and `slots`.
+    void append(DF df, const Fragments& f, const std::uint32_t* slots, std::size_t count) {
+        const DU du;
+        for (int c = 0; c < kFragmentFloats; ++c) hn::StoreU(f.value[c], df, value[c] + size);
+        hn::StoreU(hn::LoadU(du, slots), du, slot + size);
+        size += count;
+    }
+    // Shades the first min(size, N) pixels into `colour`, then moves the
+    // rest to the front.
+    void shade_front(DF df, const Material& m, std::uint32_t* colour, TileCounts& counts) {
+        const DU du;
+        const std::size_t n = hn::Lanes(df);
+        const std::size_t count = std::min(size, n);
+        Fragments f;
+        for (int c = 0; c < kFragmentFloats; ++c) f.value[c] = hn::Load(df, value[c]);
+        alignas(64) std::uint32_t shaded[hn::MaxLanes(du)];
+        hn::Store(shade(df, m, f, hn::FirstN(df, count)), du, shaded);
+        for (std::size_t lane = 0; lane < count; ++lane) colour[slot[lane]] = shaded[lane];
+        counts.shaded += count;
+        counts.lanes += n;
+        size -= count;
+        for (int c = 0; c < kFragmentFloats; ++c) std::copy_n(value[c] + count, size, value[c]);
+        std::copy_n(slot + count, size, slot);
+    }
+};
+
 // Shades each pixel the visibility pass gave a triangle, one full vector at
 // a time: the triangle's pixels in the tile are queued (compressed into
-// consecutive lanes) and shaded N at once, so that a vector is full even where
-// the triangle covers a few pixels of each block.
+// consecutive lanes), interpolated N at once, and their fragments queued
+// again with those of the triangles that follow (while the model is the
+// same), so that a vector is full even where each triangle covers a few
+// pixels of the tile.
 void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DF df;
     const DU du;
@@ -71,34 +110,36 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const TriangleChunks& triangles = *work.triangles;
     std::size_t piece = 0;
     const SlotTables& s = slots();
-    // The queue: tile slots and tile-relative pixel positions; room for one
-    // vector more than it ever keeps, as CompressStore writes a whole vector.
+    // A triangle's pixels: tile slots and tile-relative positions; room for
+    // one vector more than it ever keeps, as CompressStore writes a whole vector.
     alignas(64) std::uint32_t queue_slot[2 * hn::MaxLanes(du)] = {};
     alignas(64) float queue_x[2 * hn::MaxLanes(df)] = {}, queue_y[2 * hn::MaxLanes(df)] = {};
-    alignas(64) std::uint32_t shaded[hn::MaxLanes(du)];
+    FragmentQueue fragments;
     std::uint32_t* colour = buffers.colour.get();
+    const auto shade_all = [&] {
+        while (fragments.size > 0)
+            fragments.shade_front(df, work.materials[fragments.model], colour, counts);
+    };
     for (std::size_t i = 0; i < work.bin_size; ++i) {
         const std::uint32_t index = work.bin[i];
         const FastTriangle& t = triangles.at(index, piece);
-        const Material& material = work.materials[t.model];
         const BlockRange r = blocks_of(t, work);
         if (r.first_x > r.last_x) continue;
         if (!work.techniques.full_vectors) {
             shade_by_chunks(work, buffers, t, index, counts);
             continue;
         }
+        if (t.model != fragments.model) shade_all();
+        fragments.model = t.model;
         // The weights, stepped exactly from the tile's first pixel.
         const BlockWeights w = block_weights(t, work.x0, work.y0);
         std::size_t queued = 0;
-        const auto shade_queued = [&](std::size_t count) {
-            const VF x = hn::Load(df, queue_x), y = hn::Load(df, queue_y);
+        const auto interpolate_queued = [&](std::size_t count) {
             VF b[3];
-            weights_at(df, t, w, x, y, b);
-            hn::Store(shade(df, material, t, b, hn::FirstN(df, count)), du, shaded);
-            for (std::size_t lane = 0; lane < count; ++lane)
-                colour[queue_slot[lane]] = shaded[lane];
-            counts.shaded += count;
-            counts.lanes += n;
+            weights_at(df, t, w, hn::Load(df, queue_x), hn::Load(df, queue_y), b);
+            fragments.append(df, interpolate(df, t, b), queue_slot, count);
+            if (fragments.size >= n)
+                fragments.shade_front(df, work.materials[t.model], colour, counts);
         };
         for (int by = r.first_y; by <= r.last_y; ++by)
             for (int bx = r.first_x; bx <= r.last_x; ++bx) {
@@ -119,7 +160,7 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                     queued += hn::CompressStore(hn::Add(hn::Load(df, s.row + first), block_y),
                                                 mine_f, df, queue_y + queued);
                     if (queued >= n) {
-                        shade_queued(n);
+                        interpolate_queued(n);
                         queued -= n;
                         std::copy_n(queue_slot + n, queued, queue_slot);
                         std::copy_n(queue_x + n, queued, queue_x);
@@ -128,8 +169,10 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                 }
                 // [/doc:lane-queue]
             }
-        if (queued > 0) shade_queued(queued);
+        if (queued > 0) interpolate_queued(queued);
+        if (!work.techniques.across_triangles) shade_all();
     }
+    shade_all();
 }
 
 void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, TileCounts& counts) {

@@ -46,6 +46,9 @@ struct Techniques {
         true;                  // skip a block whose farthest depth is nearer than the triangle
     bool shade_once = true;    // depth and ids first, then shade each visible pixel once
     bool full_vectors = true;  // queue a triangle's pixels so that the shader's vectors are full
+    // ... and queue them across triangles (of one model): pixels of small
+    // triangles share the shader's vectors (with full_vectors only)
+    bool across_triangles = true;
 };
 
 struct TileWork {

@@ -235,7 +235,7 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     o.vertex_cache = false;
     o.parallel = false;
     o.threads = 1;
-    o.techniques = {false, false, false, false};
+    o.techniques = {false, false, false, false, false};
     o.specular_in_normal_alpha = false;
     std::vector<Step> out;
     out.push_back({"one thread, scalar, per corner", o, scalar});
@@ -367,8 +367,12 @@ int main(int argc, char** argv) {
                                {sphere_with_globe_maps(globe, n)},
                                filling_the_frame()});
         std::vector<const Cell*> triangle_cells;
+        fast::FastOptions each_alone;  // each triangle's last vector shaded part-empty
+        each_alone.techniques.across_triangles = false;
         for (const Scene& s : spheres) {
             triangle_cells.push_back(add(s, step_size, "fast", {}, 0, "fast, 2 threads"));
+            triangle_cells.push_back(add(s, step_size, "fast", each_alone, 0,
+                                         "fast, 2 threads, no queue across triangles"));
             if (peer)
                 triangle_cells.push_back(
                     add(s, step_size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
