@@ -254,6 +254,8 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     }
     o.techniques.full_vectors = true;
     out.push_back({"+ full vectors (a triangle's pixels queued)", o, simd_sets.front()});
+    o.techniques.across_triangles = true;
+    out.push_back({"+ the queue carried across triangles", o, simd_sets.front()});
     o.specular_in_normal_alpha = true;
     out.push_back({"+ the specular map in the normal map's alpha", o, simd_sets.front()});
     o.parallel = true;
@@ -442,13 +444,21 @@ int main(int argc, char** argv) {
         }
         // 3. The triangle counts.
         rl::ResultsTable triangles_table({"triangles", "renderer", "ms_per_frame", "ms_min",
-                                          "ms_max", "million_triangles_per_s"});
+                                          "ms_max", "million_triangles_per_s",
+                                          "percent_of_lanes_used"});
         for (const Cell* c : triangle_cells) {
             const double triangles =
                 static_cast<double>(c->scene->models[0].lit.model.mesh.faces.size());
+            double lanes_used = NAN;  // the shader's lanes that shade a pixel, in the cell's view
+            if (c->renderer == "fast") {
+                fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
+                const fast::TileCounts tiles = renderer.render(c->scene->camera).tiles;
+                lanes_used = 100.0 * static_cast<double>(tiles.shaded) /
+                             static_cast<double>(std::max<std::uint64_t>(tiles.lanes, 1));
+            }
             triangles_table.add_row({static_cast<long long>(triangles),
                                      c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
-                                     ms_max(c), triangles / ms(c) / 1e3});
+                                     ms_max(c), triangles / ms(c) / 1e3, lanes_used});
         }
         // 4. Where the time goes: the stage timers, averaged over an orbit
         // after a first frame (the tiles' split is summed over both threads,
