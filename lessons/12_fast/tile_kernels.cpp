@@ -59,6 +59,17 @@ void shade_by_chunks(const TileWork& work, TileBuffers& buffers, const FastTrian
         }
 }
 
+// Shades the first `count` lanes of `f` into the tile slots `slots` of `colour`.
+void shade_into_slots(DF df, const Material& m, const Fragments& f, const std::uint32_t* slots,
+                      std::size_t count, std::uint32_t* colour, TileCounts& counts) {
+    const DU du;
+    alignas(64) std::uint32_t shaded[hn::MaxLanes(du)];
+    hn::Store(shade(df, m, f, hn::FirstN(df, count)), du, shaded);
+    for (std::size_t lane = 0; lane < count; ++lane) colour[slots[lane]] = shaded[lane];
+    counts.shaded += count;
+    counts.lanes += hn::Lanes(df);
+}
+
 // Pixels waiting for the shader: their fragments (interpolated, so that
 // pixels of different triangles of one model can share a vector) and the
 // tile slots their colours go to. Room for a vector more than it ever
@@ -80,16 +91,10 @@ struct FragmentQueue {
     // Shades the first min(size, N) pixels into `colour`, then moves the
     // rest to the front.
     void shade_front(DF df, const Material& m, std::uint32_t* colour, TileCounts& counts) {
-        const DU du;
-        const std::size_t n = hn::Lanes(df);
-        const std::size_t count = std::min(size, n);
+        const std::size_t count = std::min(size, hn::Lanes(df));
         Fragments f;
         for (int c = 0; c < kFragmentFloats; ++c) f.value[c] = hn::Load(df, value[c]);
-        alignas(64) std::uint32_t shaded[hn::MaxLanes(du)];
-        hn::Store(shade(df, m, f, hn::FirstN(df, count)), du, shaded);
-        for (std::size_t lane = 0; lane < count; ++lane) colour[slot[lane]] = shaded[lane];
-        counts.shaded += count;
-        counts.lanes += n;
+        shade_into_slots(df, m, f, slot, count, colour, counts);
         size -= count;
         for (int c = 0; c < kFragmentFloats; ++c) std::copy_n(value[c] + count, size, value[c]);
         std::copy_n(slot + count, size, slot);
@@ -129,18 +134,25 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
             shade_by_chunks(work, buffers, t, index, counts);
             continue;
         }
-        if (t.model != fragments.model) shade_all();
+        // [doc:fragment-queue]
+        if (t.model != fragments.model) shade_all();  // the queue holds one material's pixels
         fragments.model = t.model;
         // The weights, stepped exactly from the tile's first pixel.
         const BlockWeights w = block_weights(t, work.x0, work.y0);
         std::size_t queued = 0;
+        const Material& material = work.materials[t.model];
         const auto interpolate_queued = [&](std::size_t count) {
             VF b[3];
             weights_at(df, t, w, hn::Load(df, queue_x), hn::Load(df, queue_y), b);
-            fragments.append(df, interpolate(df, t, b), queue_slot, count);
-            if (fragments.size >= n)
-                fragments.shade_front(df, work.materials[t.model], colour, counts);
+            const Fragments f = interpolate(df, t, b);
+            if (count == n) {  // a full vector needs no queue (a pixel's colour is its own)
+                shade_into_slots(df, material, f, queue_slot, n, colour, counts);
+                return;
+            }
+            fragments.append(df, f, queue_slot, count);
+            if (fragments.size >= n) fragments.shade_front(df, material, colour, counts);
         };
+        // [/doc:fragment-queue]
         for (int by = r.first_y; by <= r.last_y; ++by)
             for (int bx = r.first_x; bx <= r.last_x; ++bx) {
                 const std::uint32_t base =

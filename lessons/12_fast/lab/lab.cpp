@@ -19,6 +19,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -384,85 +385,118 @@ int main(int argc, char** argv) {
             if (!in_child.count(c.get())) register_cell(*c);
         std::map<std::string, rl::lab::Timing> timings = rl::lab::run_benchmarks();
         timings.merge(fast::lab::run_one_thread_child(arguments, options.out_dir));
+        // A run narrowed by --benchmark_filter writes the tables whose cells
+        // all ran, and only those (a table with a missing cell would be a
+        // different table).
+        const auto all_ran = [&](const std::vector<const Cell*>& section) {
+            return std::all_of(section.begin(), section.end(),
+                               [&](const Cell* c) { return timings.count(c->name) > 0; });
+        };
+        std::vector<const Cell*> step_section;
+        for (const auto& step : step_cells) step_section.push_back(step.first);
+        std::vector<std::string> written;
         const auto ms = [&](const Cell* c) { return timings.at(c->name).median_ns / 1e6; };
         const auto ms_min = [&](const Cell* c) { return timings.at(c->name).min_ns / 1e6; };
         const auto ms_max = [&](const Cell* c) { return timings.at(c->name).max_ns / 1e6; };
 
         // 1. The steps, each image against lesson 07's.
-        rl::ResultsTable steps_table({"scene", "step", "ms_per_frame", "ms_min", "ms_max",
-                                      "times_faster_than_lesson_07", "max_abs_vs_lesson_07",
-                                      "percent_off_by_more_than_1"});
-        std::map<const Scene*, double> lesson07_ms;
-        for (const auto& [c, label] : step_cells) {
-            if (c->renderer == "lesson 07") lesson07_ms[c->scene] = ms(c);
-            std::optional<rl::Image> image;
-            const rl::Image expected = lesson07_frame(*c->scene, c->size, c->options.render);
-            if (c->renderer == "fast") image = fast_frame(*c->scene, c->size, c->options, c->simd);
-            if (c->renderer == "llvmpipe")
-                image = llvmpipe_frame(*c->scene, c->size, c->options.render);
-            if (c->renderer == "lesson 07") image = expected;
-            const rl::ImageDiff d = rl::compare_images(expected, *image, 1);
-            steps_table.add_row({c->scene->name, label, ms(c), ms_min(c), ms_max(c),
-                                 lesson07_ms.at(c->scene) / ms(c),
-                                 static_cast<long long>(d.max_abs), 100 * d.share_over});
+        if (all_ran(step_section)) {
+            rl::ResultsTable steps_table({"scene", "step", "ms_per_frame", "ms_min", "ms_max",
+                                          "times_faster_than_lesson_07", "max_abs_vs_lesson_07",
+                                          "percent_off_by_more_than_1"});
+            std::map<const Scene*, double> lesson07_ms;
+            for (const auto& [c, label] : step_cells) {
+                if (c->renderer == "lesson 07") lesson07_ms[c->scene] = ms(c);
+                std::optional<rl::Image> image;
+                const rl::Image expected = lesson07_frame(*c->scene, c->size, c->options.render);
+                if (c->renderer == "fast")
+                    image = fast_frame(*c->scene, c->size, c->options, c->simd);
+                if (c->renderer == "llvmpipe")
+                    image = llvmpipe_frame(*c->scene, c->size, c->options.render);
+                if (c->renderer == "lesson 07") image = expected;
+                const rl::ImageDiff d = rl::compare_images(expected, *image, 1);
+                steps_table.add_row({c->scene->name, label, ms(c), ms_min(c), ms_max(c),
+                                     lesson07_ms.at(c->scene) / ms(c),
+                                     static_cast<long long>(d.max_abs), 100 * d.share_over});
+            }
+            steps_table.write_csv(options.out_dir / "12_steps.csv");
+            written.push_back("12_steps.csv");
         }
         // 2. The sizes: each against the floor (on 2 threads), ours against
         // llvmpipe on as many threads as ours.
-        rl::ResultsTable sizes_table({"scene", "size", "renderer", "ms_per_frame", "ms_min",
-                                      "ms_max", "times_the_floor", "times_llvmpipe",
-                                      "times_plain_llvmpipe", "percent_differing_from_llvmpipe"});
-        using Key = std::tuple<const Scene*, int, int>;  // scene, size, threads
-        const auto key_of = [](const Cell* c) {
-            const int threads =
-                c->renderer == "fast" ? (c->options.threads == 1 ? 1 : kThreads) : c->peer_threads;
-            return Key{c->scene, c->size, threads};
-        };
-        std::map<std::pair<const Scene*, int>, double> floor_ms;
-        std::map<Key, double> peer_ms, plain_ms;
-        for (const Cell* c : size_cells) {
-            if (c->renderer == "floor") floor_ms[{c->scene, c->size}] = ms(c);
-            if (c->renderer == "llvmpipe") peer_ms[key_of(c)] = ms(c);
-            if (c->renderer == "llvmpipe plain") plain_ms[key_of(c)] = ms(c);
-        }
-        std::map<std::pair<const Scene*, int>, double> differing;
-        if (peer)
-            for (const Scene& s : scenes)
-                for (int size : sizes) {
-                    const rl::Image ours = fast_frame(s, size, {}, 0);
-                    differing[{&s, size}] =
-                        100 * rl::compare_images(ours, *llvmpipe_frame(s, size, {}), 8).share_over;
-                }
-        for (const Cell* c : size_cells) {
-            const std::pair<const Scene*, int> key{c->scene, c->size};
-            const bool ours = c->renderer == "fast";
-            sizes_table.add_row({c->scene->name, static_cast<long long>(c->size),
-                                 c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
-                                 ms_max(c), ms(c) / floor_ms.at(key),
-                                 ours && peer ? ms(c) / peer_ms.at(key_of(c)) : NAN,
-                                 ours && peer ? ms(c) / plain_ms.at(key_of(c)) : NAN,
-                                 ours && peer ? differing.at(key) : NAN});
+        if (all_ran(size_cells)) {
+            rl::ResultsTable sizes_table(
+                {"scene", "size", "renderer", "ms_per_frame", "ms_min", "ms_max", "times_the_floor",
+                 "times_llvmpipe", "times_plain_llvmpipe", "percent_differing_from_llvmpipe"});
+            using Key = std::tuple<const Scene*, int, int>;  // scene, size, threads
+            const auto key_of = [](const Cell* c) {
+                const int threads = c->renderer == "fast" ? (c->options.threads == 1 ? 1 : kThreads)
+                                                          : c->peer_threads;
+                return Key{c->scene, c->size, threads};
+            };
+            std::map<std::pair<const Scene*, int>, double> floor_ms;
+            std::map<Key, double> peer_ms, plain_ms;
+            for (const Cell* c : size_cells) {
+                if (c->renderer == "floor") floor_ms[{c->scene, c->size}] = ms(c);
+                if (c->renderer == "llvmpipe") peer_ms[key_of(c)] = ms(c);
+                if (c->renderer == "llvmpipe plain") plain_ms[key_of(c)] = ms(c);
+            }
+            std::map<std::pair<const Scene*, int>, double> differing;
+            if (peer)
+                for (const Scene& s : scenes)
+                    for (int size : sizes) {
+                        const rl::Image ours = fast_frame(s, size, {}, 0);
+                        differing[{&s, size}] =
+                            100 *
+                            rl::compare_images(ours, *llvmpipe_frame(s, size, {}), 8).share_over;
+                    }
+            for (const Cell* c : size_cells) {
+                const std::pair<const Scene*, int> key{c->scene, c->size};
+                const bool ours = c->renderer == "fast";
+                sizes_table.add_row({c->scene->name, static_cast<long long>(c->size),
+                                     c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
+                                     ms_max(c), ms(c) / floor_ms.at(key),
+                                     ours && peer ? ms(c) / peer_ms.at(key_of(c)) : NAN,
+                                     ours && peer ? ms(c) / plain_ms.at(key_of(c)) : NAN,
+                                     ours && peer ? differing.at(key) : NAN});
+            }
+            sizes_table.write_csv(options.out_dir / "12_sizes.csv");
+            written.push_back("12_sizes.csv");
         }
         // 3. The triangle counts.
-        rl::ResultsTable triangles_table({"triangles", "renderer", "ms_per_frame", "ms_min",
-                                          "ms_max", "million_triangles_per_s",
-                                          "percent_of_lanes_used"});
-        for (const Cell* c : triangle_cells) {
-            const double triangles =
-                static_cast<double>(c->scene->models[0].lit.model.mesh.faces.size());
-            double lanes_used = NAN;  // the shader's lanes that shade a pixel, in the cell's view
-            if (c->renderer == "fast") {
-                fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
-                const fast::TileCounts tiles = renderer.render(c->scene->camera).tiles;
-                lanes_used = 100.0 * static_cast<double>(tiles.shaded) /
-                             static_cast<double>(std::max<std::uint64_t>(tiles.lanes, 1));
+        if (all_ran(triangle_cells)) {
+            rl::ResultsTable triangles_table({"triangles", "renderer", "ms_per_frame", "ms_min",
+                                              "ms_max", "million_triangles_per_s",
+                                              "percent_of_lanes_used"});
+            for (const Cell* c : triangle_cells) {
+                const double triangles =
+                    static_cast<double>(c->scene->models[0].lit.model.mesh.faces.size());
+                double lanes_used =
+                    NAN;  // the shader's lanes that shade a pixel, in the cell's view
+                if (c->renderer == "fast") {
+                    fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
+                    const fast::TileCounts tiles = renderer.render(c->scene->camera).tiles;
+                    lanes_used = 100.0 * static_cast<double>(tiles.shaded) /
+                                 static_cast<double>(std::max<std::uint64_t>(tiles.lanes, 1));
+                }
+                triangles_table.add_row({static_cast<long long>(triangles),
+                                         c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
+                                         ms_max(c), triangles / ms(c) / 1e3, lanes_used});
             }
-            triangles_table.add_row({static_cast<long long>(triangles),
-                                     c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
-                                     ms_max(c), triangles / ms(c) / 1e3, lanes_used});
+            triangles_table.write_csv(options.out_dir / "12_triangles.csv");
+            written.push_back("12_triangles.csv");
         }
         // 4. Where the time goes: the stage timers, averaged over an orbit
         // after a first frame (the tiles' split is summed over both threads,
         // so it is shown per thread).
+        if (written.size() < 3) {  // a narrowed run: the stages are timed in full runs only
+            if (written.empty())
+                throw std::runtime_error("--benchmark_filter left no section of the lab whole");
+            std::string list;
+            for (const std::string& w : written) list += (list.empty() ? "" : ", ") + w;
+            std::printf("wrote %s to %s\n", list.c_str(), options.out_dir.string().c_str());
+            return 0;
+        }
         rl::ResultsTable stages_table({"scene", "size", "stage", "ms_per_frame"});
         for (const Scene& s : scenes)
             for (int size : std::set<int>{step_size, sizes.back()}) {  // one size if quick
@@ -492,9 +526,6 @@ int main(int argc, char** argv) {
                 row("tiles: copy into the frame (per thread)", copy);
                 row("tiles, in all (clock)", sum.tiles);
             }
-        steps_table.write_csv(options.out_dir / "12_steps.csv");
-        sizes_table.write_csv(options.out_dir / "12_sizes.csv");
-        triangles_table.write_csv(options.out_dir / "12_triangles.csv");
         stages_table.write_csv(options.out_dir / "12_stages.csv");
         std::printf("wrote 12_steps.csv, 12_sizes.csv, 12_triangles.csv and 12_stages.csv to %s\n",
                     options.out_dir.string().c_str());

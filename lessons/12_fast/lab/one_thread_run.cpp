@@ -54,6 +54,7 @@ std::map<std::string, rl::lab::Timing> run_one_thread_child(
         throw std::runtime_error("the lab's one-thread run failed (its output is above)");
     // One line a cell: median, min and max in nanoseconds, repetitions, then the name.
     std::ifstream in(file);
+    if (!in) throw std::runtime_error(file.string() + ": the one-thread run wrote no timings");
     std::map<std::string, rl::lab::Timing> timings;
     std::string line;
     while (std::getline(in, line)) {
@@ -66,7 +67,7 @@ std::map<std::string, rl::lab::Timing> run_one_thread_child(
         timings[name] = t;
     }
     std::filesystem::remove(file);
-    if (timings.empty()) throw std::runtime_error(file.string() + ": no timings");
+    // (none, when --benchmark_filter keeps no one-thread cell)
     return timings;
 }
 
