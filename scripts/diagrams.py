@@ -37,6 +37,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_blocks.svg              one triangle over 8x8 blocks: rejected, accepted whole, tested per pixel
   12_visibility_buffer.svg   drawing back to front: shaded per passing pixel, or once from the id buffer
   12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
+  12_fragment_queue.svg      tiny triangles' pixels shaded triangle by triangle, or queued as
+                             fragments across the triangles of a model (flushed where the model changes)
   12_shadow_pass.svg         a shadow map's block skip under a negative depth bias: bounded by the
                              unbiased nearest depth (a nearer triangle lost) or by the biased one
   12_texel_words.svg         a packed texel's 32-bit word: the normal map's RGB and, in its alpha
@@ -1008,6 +1010,54 @@ def lane_queue(out):
     save(figure, out, "12_lane_queue.svg")
 
 
+def fragment_queue(out):
+    # Eleven tiny triangles, eight of one model and three of the next, each
+    # covering a few pixels of a tile: shaded at each triangle's end, or
+    # queued as fragments until a vector is full or the model changes.
+    lanes = 16
+    models = (("the globe", [3, 5, 2, 6, 4, 1, 3, 7]), ("the crate", [4, 6, 2]))
+    shades = {0: ("#d04020", "#f0a080"), 1: ("#2060c0", "#90b8f0")}
+    figure, (top, bottom) = plt.subplots(1, 2, figsize=(9.0, 3.0),
+                                         gridspec_kw={"width_ratios": [1, 1]})
+
+    def lane_row(axes, row, colours):
+        for lane in range(lanes):
+            colour = colours[lane] if lane < len(colours) else "#eeeeee"
+            axes.add_patch(Rectangle((lane, -row), 1, 0.8, color=colour, ec="#999999", lw=0.3))
+
+    # Each triangle alone: one shader run per triangle.
+    row = 0
+    for m, (_, counts) in enumerate(models):
+        for k, count in enumerate(counts):
+            lane_row(top, row, [shades[m][k % 2]] * count)
+            row += 1
+    runs_alone, pixels = row, sum(sum(c) for _, c in models)
+    # Carried across triangles: full vectors, flushed at the model change.
+    row = 0
+    for m, (name, counts) in enumerate(models):
+        colours = [shades[m][k % 2] for k, count in enumerate(counts) for _ in range(count)]
+        for first in range(0, len(colours), lanes):
+            lane_row(bottom, row, colours[first:first + lanes])
+            row += 1
+        bottom.text(lanes + 0.4, -row + 1.4, "< the model changes" if m == 0 else "< the bin ends",
+                    fontsize=7, va="center")
+    runs_carried = row
+    for axes, rows, title in (
+            (top, runs_alone, f"each triangle's last vector shaded at its end:\n"
+                              f"{runs_alone} shader runs, {100 * pixels / (runs_alone * lanes):.0f}% of lanes used"),
+            (bottom, max(runs_alone, runs_carried), f"fragments carried across the model's triangles:\n"
+                                                    f"{runs_carried} shader runs, "
+                                                    f"{100 * pixels / (runs_carried * lanes):.0f}% of lanes used")):
+        axes.set_xlim(-0.2, lanes + 6.5)
+        axes.set_ylim(-rows + 0.6, 1.0)
+        axes.set_aspect("equal")
+        axes.axis("off")
+        axes.set_title(title, fontsize=8)
+    figure.suptitle(f"{pixels} pixels of eleven tiny triangles (two models, shades alternate by triangle), "
+                    f"{lanes} lanes a vector", fontsize=9)
+    save(figure, out, "12_fragment_queue.svg")
+
+
 def shadow_pass(out):
     # One 8-texel block of a shadow map, depth upwards (farther up). A was
     # drawn first and stored its depth plus a negative bias; B, drawn next,
@@ -1619,7 +1669,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, texel_words, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, fragment_queue, texel_words, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 
