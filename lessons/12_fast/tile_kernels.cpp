@@ -135,7 +135,8 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
             continue;
         }
         // [doc:fragment-queue]
-        if (t.model != fragments.model) shade_all();  // the queue holds one material's pixels
+        // The fragment queue holds one material's pixels.
+        if (t.model != fragments.model) shade_all();
         fragments.model = t.model;
         // The weights, stepped exactly from the tile's first pixel.
         const BlockWeights w = block_weights(t, work.x0, work.y0);
@@ -145,7 +146,8 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
             VF b[3];
             weights_at(df, t, w, hn::Load(df, queue_x), hn::Load(df, queue_y), b);
             const Fragments f = interpolate(df, t, b);
-            if (count == n) {  // a full vector needs no queue (a pixel's colour is its own)
+            // A full vector needs no queue: a pixel's colour depends on no other lane.
+            if (count == n) {
                 shade_into_slots(df, material, f, queue_slot, n, colour, counts);
                 return;
             }
