@@ -1,0 +1,24 @@
+cmake_minimum_required(VERSION 3.25)
+# A lab run narrowed by --benchmark_filter to one section writes that
+# section's table and no other; a filter that leaves no section whole is
+# refused. -DLAB= -DOUT= -DFILTER= -DWRITES= -DSKIPS=a|b
+file(REMOVE_RECURSE "${OUT}")
+execute_process(COMMAND "${LAB}" --quick --out "${OUT}" "--benchmark_filter=${FILTER}"
+                RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "${LAB} --benchmark_filter=${FILTER} failed (${result})")
+endif()
+if(NOT EXISTS "${OUT}/${WRITES}")
+  message(FATAL_ERROR "the narrowed run did not write ${WRITES}")
+endif()
+string(REPLACE "|" ";" skips "${SKIPS}")
+foreach(table IN LISTS skips)
+  if(EXISTS "${OUT}/${table}")
+    message(FATAL_ERROR "the narrowed run wrote ${table}, whose cells it did not all run")
+  endif()
+endforeach()
+execute_process(COMMAND "${LAB}" --quick --out "${OUT}/none" "--benchmark_filter=^no such cell$"
+                RESULT_VARIABLE result ERROR_VARIABLE error)
+if(result EQUAL 0 OR NOT error MATCHES "left no section of the lab whole")
+  message(FATAL_ERROR "a filter matching no cell was not refused (${result}): ${error}")
+endif()
