@@ -111,7 +111,7 @@ HWY_INLINE VF light_reaching(DF df, const Material& m, const Vec3& position, con
 // What the shader reads of a pixel's triangle, lane by lane: lesson 05's
 // perspective-correct varyings and the uv's screen derivatives (the mip
 // level's footprint). Once interpolated, pixels of different triangles can
-// share a vector (docs/12_fast.md, "Full vectors").
+// share a vector (docs/12_fast.md, "Vectors across triangles").
 inline constexpr int kFragmentFloats = kVaryingFloats + 4;
 struct Fragments {
     // The varyings (position, normal, tangent, handedness, u, v), then
