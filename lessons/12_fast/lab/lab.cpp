@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -359,6 +360,11 @@ int main(int argc, char** argv) {
             fast::lab::write_one_thread_timings(rl::lab::run_benchmarks(), options.out_dir);
             return 0;
         }
+        // Tables of an earlier run must not pass for this one's when this
+        // run (narrowed by --benchmark_filter) leaves them out.
+        const char* const kTables[] = {"12_steps.csv", "12_sizes.csv", "12_triangles.csv",
+                                       "12_stages.csv"};
+        for (const char* table : kTables) std::filesystem::remove(options.out_dir / table);
         // 3. The triangle counts.
         std::vector<Scene> spheres;
         const std::vector<int> segments = options.quick
@@ -471,8 +477,8 @@ int main(int argc, char** argv) {
             for (const Cell* c : triangle_cells) {
                 const double triangles =
                     static_cast<double>(c->scene->models[0].lit.model.mesh.faces.size());
-                double lanes_used =
-                    NAN;  // the shader's lanes that shade a pixel, in the cell's view
+                // The share of the shader's lanes that shade a pixel, in the cell's view.
+                double lanes_used = NAN;
                 if (c->renderer == "fast") {
                     fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
                     const fast::TileCounts tiles = renderer.render(c->scene->camera).tiles;
@@ -489,7 +495,8 @@ int main(int argc, char** argv) {
         // 4. Where the time goes: the stage timers, averaged over an orbit
         // after a first frame (the tiles' split is summed over both threads,
         // so it is shown per thread).
-        if (written.size() < 3) {  // a narrowed run: the stages are timed in full runs only
+        const bool narrowed = written.size() < 3;
+        if (narrowed) {  // the stages are timed in full runs only
             if (written.empty())
                 throw std::runtime_error("--benchmark_filter left no section of the lab whole");
             std::string list;
