@@ -194,13 +194,14 @@ inline rl::vec3 to_float(const rl::dvec3& v) {
     return {to_float(v.x), to_float(v.y), to_float(v.z)};
 }
 
-// Divide, viewport, and the constants of one triangle of clip-space vertices.
-template <Interpolable V, class F>
-TriangleSetup<V, F> set_up(const ClipVertex<V>& a, const ClipVertex<V>& b, const ClipVertex<V>& c,
-                           const F& flat, int face, Interpolation interpolation, int width,
-                           int height) {
+// Divide, viewport, and the constants of one triangle of clip-space vertices
+// (their own flat values, G, are not read: `flat` is the triangle's).
+template <Interpolable V, class F, class G = NoFlat>
+TriangleSetup<V, F> set_up(const ClipVertex<V, G>& a, const ClipVertex<V, G>& b,
+                           const ClipVertex<V, G>& c, const F& flat, int face,
+                           Interpolation interpolation, int width, int height) {
     TriangleSetup<V, F> t;
-    const ClipVertex<V>* v[3] = {&a, &b, &c};
+    const ClipVertex<V, G>* v[3] = {&a, &b, &c};
     t.perspective_correct = interpolation == Interpolation::perspective_correct;
     for (int k = 0; k < 3; ++k) {
         const ClipPosition& p = v[k]->position;
@@ -306,8 +307,8 @@ inline double facing(const ClipPosition& a, const ClipPosition& b, const ClipPos
 // frustum of `model_view_projection`: then nothing in it can be seen.
 bool outside_frustum(const Box& box, const rl::mat4& model_view_projection);
 
-// The face cut against the planes (most faces need no cut and are copied as
-// they are); counts what was cut and what was wholly outside.
+// The face cut against the planes (a face inside them all is copied as it
+// is); counts what was cut and what was wholly outside.
 template <Interpolable V, class F>
 ClipPolygon<V> clip_face(const std::array<ClipVertex<V, F>, 3>& v, const ClipPlanes& planes,
                          PipelineCounts& counts) {
@@ -413,29 +414,37 @@ struct OneSamplePerPixel {
 // [/doc:coverage]
 
 // [doc:assemble]
-// Stages 2-4 for one face, its corners out of the vertex stage, for a
-// target of width x height pixels whose clip planes are `planes`: each
+// Stages 2-4 for one face, its corners a, b, c out of the vertex stage, for
+// a target of width x height pixels whose clip planes are `planes`: each
 // triangle that comes out, set up for the rasterizer, goes to emit(t).
 // Counts the face if culled, clipped or wholly outside.
 template <Interpolable V, class F, class Emit>
-void assemble_face(const std::array<ClipVertex<V, F>, 3>& v, int face, const ClipPlanes& planes,
-                   int width, int height, const PipelineOptions& options, PipelineCounts& counts,
-                   Emit&& emit) {
+void assemble_face(const ClipVertex<V, F>& a, const ClipVertex<V, F>& b, const ClipVertex<V, F>& c,
+                   int face, const ClipPlanes& planes, int width, int height,
+                   const PipelineOptions& options, PipelineCounts& counts, Emit&& emit) {
     // 2. Back faces culled by the sign of det[x y w]. Not "culled unless
     // > 0": a face whose sign is NaN goes on, for the rasterizer to refuse.
     if (options.cull != Cull::none) {
-        const double area = facing(v[0].position, v[1].position, v[2].position);
+        const double area = facing(a.position, b.position, c.position);
         if (options.cull == Cull::back ? area <= 0 : area >= 0) {
             ++counts.culled;
             return;
         }
     }
-    // 3. Clipping: the face becomes a convex polygon, drawn as a fan.
-    const ClipPolygon<V> polygon = clip_face(v, planes, counts);
+    // 3. Clipping. Most faces are inside every plane and go on as they are,
+    // not copied into a polygon (lesson 12 sets up a million faces a frame);
+    // the others become a convex polygon, drawn as a fan.
+    const ClipPosition positions[3] = {a.position, b.position, c.position};
+    if (inside_all(planes, positions)) {
+        // 4. Divide and viewport.
+        emit(set_up(a, b, c, a.flat, face, options.interpolation, width, height));
+        return;
+    }
+    const ClipPolygon<V> polygon = clip_face<V, F>({a, b, c}, planes, counts);
     for (int i = 1; i + 1 < polygon.size; ++i)
         // 4. Divide and viewport; the flat values come from the first vertex.
         emit(set_up(polygon.vertices[0], polygon.vertices[static_cast<std::size_t>(i)],
-                    polygon.vertices[static_cast<std::size_t>(i + 1)], v[0].flat, face,
+                    polygon.vertices[static_cast<std::size_t>(i + 1)], a.flat, face,
                     options.interpolation, width, height));
 }
 
@@ -450,7 +459,7 @@ void assemble(const Geometry& geometry, const P& program, int width, int height,
         const std::array<ClipVertex<typename P::Varyings, FlatOf<P>>, 3> v = {
             program.vertex(geometry.corner(face, 0)), program.vertex(geometry.corner(face, 1)),
             program.vertex(geometry.corner(face, 2))};
-        assemble_face(v, face, planes, width, height, options, counts, emit);
+        assemble_face(v[0], v[1], v[2], face, planes, width, height, options, counts, emit);
     }
 }
 // [/doc:assemble]

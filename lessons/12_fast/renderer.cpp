@@ -428,17 +428,17 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
             // The corners of step 1: with the vertex cache, three indices into
             // the distinct vertices, swapped as the surface swaps them when
             // mirrored; without it, already in the surface's order.
-            std::array<perspective::ClipVertex<Varyings>, 3> v;
+            // (Read where they are: a face culled costs no copy of its corners.)
+            std::size_t corner[3] = {3 * f, 3 * f + 1, 3 * f + 2};
             if (s.options.vertex_cache) {
                 const std::uint32_t* index = &m.indices[3 * f];
-                v = {vertices[index[0]], vertices[index[mirrored ? 2 : 1]],
-                     vertices[index[mirrored ? 1 : 2]]};
-            } else {
-                v = {vertices[3 * f], vertices[3 * f + 1], vertices[3 * f + 2]};
+                corner[0] = index[0], corner[1] = index[mirrored ? 2 : 1];
+                corner[2] = index[mirrored ? 1 : 2];
             }
             // Lesson 05's stages 2-4: cull, clip, divide and viewport, set up.
-            perspective::assemble_face(v, static_cast<int>(f), planes, s.width, s.height, pipeline,
-                                       piece.counts, keep);
+            perspective::assemble_face(vertices[corner[0]], vertices[corner[1]],
+                                       vertices[corner[2]], static_cast<int>(f), planes, s.width,
+                                       s.height, pipeline, piece.counts, keep);
         }
     };
     if (s.options.parallel)
