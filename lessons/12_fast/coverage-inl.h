@@ -30,9 +30,13 @@ namespace hn = hwy::HWY_NAMESPACE;
 // on the same 64-bit integers, several pixels per instruction. Blocks wholly
 // outside one edge, or wholly inside all three, are decided from the
 // block's corners (the edge function is linear: its extremes over the block
-// are at corners).
-HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, bool coarse,
-                                        TileCounts& counts) {
+// are at corners). Only the rows `rows` are tested: no other row holds a
+// centre of the triangle's box.
+struct BlockRows {
+    int first, last;  // 0 to kBlock - 1
+};
+HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, BlockRows rows,
+                                        bool coarse, TileCounts& counts) {
     // [doc:block-corners]
     std::int64_t origin[3];
     bool inside_all = true;
@@ -74,7 +78,7 @@ HWY_INLINE std::uint64_t block_coverage(const FastTriangle& t, int ox, int oy, b
         alignas(64) std::int64_t column_step[kBlock];
         for (int c = 0; c < kBlock; ++c) column_step[c] = c * step_x;
         std::uint64_t inside = 0;
-        for (int row = 0; row < kBlock; ++row) {
+        for (int row = rows.first; row <= rows.last; ++row) {
             const std::int64_t start = origin[k] + row * step_y;
             for (int c = 0; c < kBlock; c += static_cast<int>(n)) {
                 const auto e = hn::Add(hn::Set(d64, start), hn::LoadU(d64, column_step + c));
@@ -171,6 +175,24 @@ HWY_INLINE BlockRange blocks_of(const FastTriangle& t, const TileWork& work) {
     return {x0 / kBlock, x1 / kBlock, y0 / kBlock, y1 / kBlock};
 }
 
+// [doc:small-triangles]
+// The small-triangle path: the rows of the block whose bottom row is pixel
+// row oy that the triangle's box reaches (a triangle of a pixel or two
+// reaches one or two of the eight), and the slots [first, end) of those rows
+// in whole vectors of n. No other slot can hold one of its pixels.
+HWY_INLINE BlockRows rows_of(const FastTriangle& t, int oy, const Techniques& use) {
+    if (!use.block_rows) return {0, kBlock - 1};
+    return {std::max(t.y0 - oy, 0), std::min(t.y1 - oy, kBlock - 1)};
+}
+struct SlotRange {
+    int first, end;
+};
+HWY_INLINE SlotRange slots_of(BlockRows rows, std::size_t n) {
+    const int step = static_cast<int>(n);
+    return {rows.first * kBlock / step * step, ((rows.last + 1) * kBlock + step - 1) / step * step};
+}
+// [/doc:small-triangles]
+
 // The visibility pass: depth and the id of the nearest triangle at every
 // pixel (or, without shade_once, each passing pixel shaded at once, as
 // lesson 07 does).
@@ -202,14 +224,17 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
                     continue;
                 }
                 const int ox = work.x0 + bx * kBlock, oy = work.y0 + by * kBlock;
-                const std::uint64_t coverage = block_coverage(t, ox, oy, use.coarse_blocks, counts);
+                const BlockRows rows = rows_of(t, oy, use);
+                const std::uint64_t coverage =
+                    block_coverage(t, ox, oy, rows, use.coarse_blocks, counts);
                 if (coverage == 0) continue;
                 const BlockWeights w = block_weights(t, ox, oy);
                 const std::size_t base = block * 64;
                 float* depth = buffers.depth.get() + base;
                 std::uint32_t* id = buffers.id.get() + base;
                 bool changed = false;
-                for (int first = 0; first < 64; first += static_cast<int>(n)) {
+                const SlotRange slots = slots_of(rows, n);
+                for (int first = slots.first; first < slots.end; first += static_cast<int>(n)) {
                     // [doc:depth-pass]
                     const MF covered = mask_of(df, coverage, first);
                     if (hn::AllFalse(df, covered)) continue;

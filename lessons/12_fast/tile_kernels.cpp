@@ -44,8 +44,10 @@ void shade_by_chunks(const TileWork& work, TileBuffers& buffers, const FastTrian
             const std::size_t base = static_cast<std::size_t>(by * blocks_per_row + bx) * 64;
             const std::uint32_t* id = buffers.id.get() + base;
             std::uint32_t* colour = buffers.colour.get() + base;
-            const BlockWeights w = block_weights(t, work.x0 + bx * kBlock, work.y0 + by * kBlock);
-            for (int first = 0; first < 64; first += static_cast<int>(n)) {
+            const int oy = work.y0 + by * kBlock;
+            const BlockWeights w = block_weights(t, work.x0 + bx * kBlock, oy);
+            const SlotRange slots = slots_of(rows_of(t, oy, work.techniques), n);
+            for (int first = slots.first; first < slots.end; first += static_cast<int>(n)) {
                 const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
                 if (hn::AllFalse(du, mine)) continue;
                 VF b[3];
@@ -162,8 +164,10 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                 const std::uint32_t* id = buffers.id.get() + base;
                 const VF block_x = hn::Set(df, static_cast<float>(bx * kBlock));
                 const VF block_y = hn::Set(df, static_cast<float>(by * kBlock));
+                const SlotRange slots =
+                    slots_of(rows_of(t, work.y0 + by * kBlock, work.techniques), n);
                 // [doc:lane-queue]
-                for (int first = 0; first < 64; first += static_cast<int>(n)) {
+                for (int first = slots.first; first < slots.end; first += static_cast<int>(n)) {
                     const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
                     if (hn::AllFalse(du, mine)) continue;
                     const auto mine_f = hn::RebindMask(df, mine);

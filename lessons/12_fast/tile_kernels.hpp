@@ -49,6 +49,9 @@ struct Techniques {
     // ... and queue them across triangles (of one model): pixels of small
     // triangles share the shader's vectors (with full_vectors only)
     bool across_triangles = true;
+    // test and shade only the rows of a block that the triangle's box
+    // reaches (a small triangle's one or two of the eight)
+    bool block_rows = true;
 };
 
 struct TileWork {

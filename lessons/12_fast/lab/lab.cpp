@@ -237,7 +237,7 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     o.vertex_cache = false;
     o.parallel = false;
     o.threads = 1;
-    o.techniques = {false, false, false, false, false};
+    o.techniques = {false, false, false, false, false, false};
     o.specular_in_normal_alpha = false;
     std::vector<Step> out;
     out.push_back({"one thread, scalar, per corner", o, scalar});
@@ -258,6 +258,8 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     out.push_back({"+ full vectors (a triangle's pixels queued)", o, simd_sets.front()});
     o.techniques.across_triangles = true;
     out.push_back({"+ the queue carried across triangles", o, simd_sets.front()});
+    o.techniques.block_rows = true;
+    out.push_back({"+ only the rows of a block a triangle reaches", o, simd_sets.front()});
     o.specular_in_normal_alpha = true;
     out.push_back({"+ the specular map in the normal map's alpha", o, simd_sets.front()});
     o.parallel = true;
@@ -378,10 +380,14 @@ int main(int argc, char** argv) {
         std::vector<const Cell*> triangle_cells;
         fast::FastOptions each_alone;  // each triangle's last vector shaded part-empty
         each_alone.techniques.across_triangles = false;
+        fast::FastOptions every_row;  // each block's eight rows, whatever the triangle's size
+        every_row.techniques.block_rows = false;
         for (const Scene& s : spheres) {
             triangle_cells.push_back(add(s, step_size, "fast", {}, 0, "fast, 2 threads"));
             triangle_cells.push_back(add(s, step_size, "fast", each_alone, 0,
                                          "fast, 2 threads, no queue across triangles"));
+            triangle_cells.push_back(
+                add(s, step_size, "fast", every_row, 0, "fast, 2 threads, every row of a block"));
             if (peer)
                 triangle_cells.push_back(
                     add(s, step_size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));

@@ -420,6 +420,7 @@ TEST(Image, EachTechniqueOffLeavesTheImageAlone) {
     EXPECT_EQ(with([](auto& o) { o.techniques.coarse_blocks = false; }), reference);
     EXPECT_EQ(with([](auto& o) { o.techniques.hierarchical_depth = false; }), reference);
     EXPECT_EQ(with([](auto& o) { o.techniques.across_triangles = false; }), reference);
+    EXPECT_EQ(with([](auto& o) { o.techniques.block_rows = false; }), reference);
     // Shading by blocks steps the weights from each block's corner, not from
     // the tile's: a level apart in a few pixels at most; shading every passing
     // pixel at once (no visibility buffer) ends on the same colours as that.
