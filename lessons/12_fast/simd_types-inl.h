@@ -9,6 +9,9 @@
 #define RASTERLAB_FAST_SIMD_TYPES_INL_H_
 #endif
 
+#include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 
@@ -51,6 +54,40 @@ HWY_INLINE MF mask_of(DF df, std::uint64_t coverage, int first) {
     std::uint8_t bytes[8];
     std::memcpy(bytes, &bits, sizeof bytes);
     return hn::LoadMaskBits(df, bytes);
+}
+
+// hn::CompressStore (the lanes of v where mask is true, written to `to` in
+// order; a whole vector is written), with its table of lane orders kept in
+// static storage on AVX2. Highway 1.0.3, Debian 12's, declares that 1 KiB
+// table as a local constexpr array, and GCC copies it onto the stack at
+// every call (google/highway#1139, fixed in later releases): on an AVX2
+// machine those copies took more than half of the shading stage's time at a
+// million triangles.
+#if HWY_TARGET == HWY_AVX2
+// Per 8-bit mask, the indices of its true lanes in order, 4 bits each.
+constexpr std::array<std::uint32_t, 256> lane_orders() {
+    std::array<std::uint32_t, 256> out{};
+    for (unsigned mask = 0; mask < 256; ++mask)
+        for (unsigned lane = 0, next = 0; lane < 8; ++lane)
+            if ((mask >> lane) & 1) out[mask] |= lane << (4 * next++);
+    return out;
+}
+#endif
+template <class D>
+HWY_INLINE std::size_t compress_store(hn::Vec<D> v, hn::Mask<D> mask, D d, hn::TFromD<D>* to) {
+#if HWY_TARGET == HWY_AVX2
+    if constexpr (sizeof(hn::TFromD<D>) == 4 && hn::MaxLanes(D()) == 8) {
+        static constexpr std::array<std::uint32_t, 256> kOrders = lane_orders();
+        std::uint8_t bits = 0;
+        hn::StoreMaskBits(d, mask, &bits);
+        const hn::RebindToUnsigned<D> du;
+        const auto shifts = hn::ShiftLeft<2>(hn::Iota(du, 0));
+        const auto order = hn::And(hn::Set(du, kOrders[bits]) >> shifts, hn::Set(du, 7));
+        hn::StoreU(hn::TableLookupLanes(v, hn::IndicesFromVec(d, order)), d, to);
+        return static_cast<std::size_t>(std::popcount(bits));
+    }
+#endif
+    return hn::CompressStore(v, mask, d, to);
 }
 
 }  // namespace HWY_NAMESPACE

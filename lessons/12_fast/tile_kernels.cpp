@@ -118,7 +118,7 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     std::size_t piece = 0;
     const SlotTables& s = slots();
     // A triangle's pixels: tile slots and tile-relative positions; room for
-    // one vector more than it ever keeps, as CompressStore writes a whole vector.
+    // one vector more than it ever keeps, as compress_store writes a whole vector.
     alignas(64) std::uint32_t queue_slot[2 * hn::MaxLanes(du)] = {};
     alignas(64) float queue_x[2 * hn::MaxLanes(df)] = {}, queue_y[2 * hn::MaxLanes(df)] = {};
     FragmentQueue fragments;
@@ -171,12 +171,12 @@ void ShadeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
                     const auto mine = hn::Eq(hn::Load(du, id + first), hn::Set(du, index));
                     if (hn::AllFalse(du, mine)) continue;
                     const auto mine_f = hn::RebindMask(df, mine);
-                    hn::CompressStore(hn::Iota(du, base + static_cast<std::uint32_t>(first)), mine,
-                                      du, queue_slot + queued);
-                    hn::CompressStore(hn::Add(hn::Load(df, s.column + first), block_x), mine_f, df,
-                                      queue_x + queued);
-                    queued += hn::CompressStore(hn::Add(hn::Load(df, s.row + first), block_y),
-                                                mine_f, df, queue_y + queued);
+                    compress_store(hn::Iota(du, base + static_cast<std::uint32_t>(first)), mine, du,
+                                   queue_slot + queued);
+                    compress_store(hn::Add(hn::Load(df, s.column + first), block_x), mine_f, df,
+                                   queue_x + queued);
+                    queued += compress_store(hn::Add(hn::Load(df, s.row + first), block_y), mine_f,
+                                             df, queue_y + queued);
                     if (queued >= n) {
                         interpolate_queued(n);
                         queued -= n;
