@@ -39,6 +39,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   12_lane_queue.svg          a triangle's pixels of a few blocks, queued into full vectors
   12_fragment_queue.svg      tiny triangles' pixels shaded triangle by triangle, or queued as
                              fragments across the triangles of a model (flushed where the model changes)
+  12_block_rows.svg          a triangle of a few pixels in one 8x8 block: every row tested and walked,
+                             or only the rows its box of pixel centres reaches
   12_shadow_pass.svg         a shadow map's block skip under a negative depth bias: bounded by the
                              unbiased nearest depth (a nearer triangle lost) or by the biased one
   12_texel_words.svg         a packed texel's 32-bit word: the normal map's RGB and, in its alpha
@@ -1058,6 +1060,44 @@ def fragment_queue(out):
     save(figure, out, "12_fragment_queue.svg")
 
 
+def block_rows(out):
+    # One 8x8 block and a triangle of a few pixels (8 lanes a vector, AVX2's
+    # floats: a vector is one row of the block). Every row tested and walked,
+    # or only the rows its box of pixel centres reaches.
+    tri = ((2.2, 2.3), (5.9, 2.6), (3.1, 4.4))
+    block = 8
+    xs = [x for x in range(block) if min(v[0] for v in tri) <= x + 0.5 <= max(v[0] for v in tri)]
+    ys = [y for y in range(block) if min(v[1] for v in tri) <= y + 0.5 <= max(v[1] for v in tri)]
+    first, last = ys[0], ys[-1]
+    figure, panels = plt.subplots(1, 2, figsize=(7.6, 3.9))
+    for axes, rows, label in ((panels[0], range(block), "every row"),
+                              (panels[1], range(first, last + 1), "only the rows its box reaches")):
+        covered = 0
+        for y in range(block):
+            for x in range(block):
+                tested = y in rows
+                axes.add_patch(Rectangle((x, y), 1, 1, color=SOFT if tested else "#ffffff", ec="#bbbbbb", lw=0.5))
+                if not tested:
+                    continue
+                inside = edge_inside(tri, x + 0.5, y + 0.5)
+                covered += inside
+                axes.plot(x + 0.5, y + 0.5, "s" if inside else ".", color=ACCENT if inside else "#888888",
+                          ms=5 if inside else 3)
+        axes.add_patch(Rectangle((xs[0] + 0.5, first + 0.5), xs[-1] - xs[0], last - first, fill=False, ec=LINE,
+                                 lw=1.0, ls="--"))
+        axes.add_patch(Polygon(tri, closed=True, fill=False, ec=INK, lw=1.2))
+        tests = 3 * block * len(rows)
+        axes.set_title(f"{label}: {len(rows)} of 8 rows,\n{tests} edge tests, {len(rows)} vectors of 8 lanes walked "
+                       f"({covered} pixels)", fontsize=8)
+        axes.set_xlim(-0.2, block + 0.2)
+        axes.set_ylim(-0.2, block + 0.2)
+        axes.set_aspect("equal")
+        axes.axis("off")
+    figure.suptitle("A triangle of a few pixels in one 8x8 block (dashed: the box of pixel centres it can cover)",
+                    fontsize=9)
+    save(figure, out, "12_block_rows.svg")
+
+
 def shadow_pass(out):
     # One 8-texel block of a shadow map, depth upwards (farther up). A was
     # drawn first and stored its depth plus a negative bias; B, drawn next,
@@ -1669,7 +1709,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, fragment_queue, texel_words, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, fragment_queue, block_rows, texel_words, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 
