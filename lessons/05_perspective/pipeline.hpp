@@ -307,16 +307,15 @@ inline double facing(const ClipPosition& a, const ClipPosition& b, const ClipPos
 // frustum of `model_view_projection`: then nothing in it can be seen.
 bool outside_frustum(const Box& box, const rl::mat4& model_view_projection);
 
-// The face cut against the planes (a face inside them all is copied as it
-// is); counts what was cut and what was wholly outside.
+// A face that is not inside every plane, cut against them (assemble_face
+// sends a face inside them all on as it is); counts it as cut or as wholly
+// outside.
 template <Interpolable V, class F>
 ClipPolygon<V> clip_face(const std::array<ClipVertex<V, F>, 3>& v, const ClipPlanes& planes,
                          PipelineCounts& counts) {
     const std::array<ClipVertex<V>, 3> corners = {ClipVertex<V>{v[0].position, v[0].varyings},
                                                   ClipVertex<V>{v[1].position, v[1].varyings},
                                                   ClipVertex<V>{v[2].position, v[2].varyings}};
-    const ClipPosition positions[3] = {v[0].position, v[1].position, v[2].position};
-    if (inside_all(planes, positions)) return {{corners[0], corners[1], corners[2]}, 3};
     const ClipPolygon<V> polygon = clip_triangle(corners, planes);
     ++(polygon.size < 3 ? counts.outside : counts.clipped);
     return polygon;
