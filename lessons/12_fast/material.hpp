@@ -33,7 +33,8 @@ struct Material {
     float normal_matrix[9];  // row-major: object-space map normals to world
     NormalSource normal_source = NormalSource::interpolated;
     textures::Filter filter = textures::Filter::trilinear;
-    bool srgb = true;  // diffuse texels decoded from sRGB and output encoded to sRGB
+    bool srgb = true;             // diffuse texels decoded from sRGB and output encoded to sRGB
+    bool srgb_one_gather = true;  // Techniques::srgb_one_gather
     const PackedTexture* albedo = nullptr;  // none: the plain colour
     float colour[3];
     const PackedTexture* normal_map = nullptr;  // the one normal_source names

@@ -244,6 +244,7 @@ struct Renderer::Impl {
                     out.normal_matrix[3 * i + j] = p->uniforms.normal_matrix[i][j];
         out.filter = r.filter;
         out.srgb = r.output == shading::Output::srgb;
+        out.srgb_one_gather = options.techniques.srgb_one_gather;
         out.albedo = m.albedo.get();
         const shading::Uniforms defaults{};
         for (std::size_t c = 0; c < 3; ++c) out.colour[c] = defaults.colour[c];

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 
 #include "06_shading/colour.hpp"
 #include "08_shadows/shadow_lookup.hpp"
@@ -48,7 +49,39 @@ HWY_INLINE VF highlight(DF df, VF alignment, float shininess) {
                           hn::Set(df, shininess == 0 ? 1.0f : 0.0f));
 }
 
-// Lesson 06's table of first bytes, widened to 32 bits for gathers.
+// Lesson 06's two tables folded into one 32-bit entry per slice of [0, 1),
+// so that a lane reads its byte with one gather instead of two: the slice's
+// first byte in the top 8 bits, and in the low 24 where the next step falls
+// inside the slice, as a fraction of the slice (exact: see
+// docs/12_fast.md, "sRGB with one gather"), or 2^24 - 1 where the slice
+// holds no step (no fraction of a value in the slice reaches it).
+// [doc:srgb-entries]
+const std::int32_t* srgb_entries() {
+    static const auto table = [] {
+        const shading::SrgbByteTables& tables = shading::srgb_byte_tables();
+        std::array<std::int32_t, 4096> entries{};
+        for (std::size_t i = 0; i < entries.size(); ++i) {
+            const std::uint32_t first = tables.first[i];
+            const double step = tables.steps[first];
+            std::uint32_t fraction = (1u << 24) - 1;
+            bool exact = i > 0;  // a value of slice 0 may reach the fraction 1 - 2^-24
+            if (step < static_cast<double>(i + 1) / 4096.0) {
+                const double scaled = (step * 4096.0 - static_cast<double>(i)) * 16777216.0;
+                exact = scaled == std::floor(scaled) && scaled < 16777215.0;
+                fraction = static_cast<std::uint32_t>(scaled);
+            }
+            // Lesson 06's steps always pass; checked here rather than assumed.
+            if (!exact) throw std::logic_error("srgb_entries: a step is not a 24-bit fraction");
+            entries[i] = static_cast<std::int32_t>((first << 24) | fraction);
+        }
+        return entries;
+    }();
+    return table.data();
+}
+// [/doc:srgb-entries]
+
+// Lesson 06's table of first bytes, widened to 32 bits for gathers (the
+// lab's step before the tables were folded).
 const std::int32_t* first_bytes() {
     static const auto table = [] {
         const shading::SrgbByteTables& tables = shading::srgb_byte_tables();
@@ -61,7 +94,8 @@ const std::int32_t* first_bytes() {
 
 // Lesson 06's encode(): the nearest sRGB byte by lesson 06's tables, or the
 // naive byte.
-HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
+// [doc:encode-channel]
+HWY_INLINE VI encode_channel(DF df, VF value, bool srgb, bool one_gather) {
     const DI di;
     if (!srgb) {
         const VF v =
@@ -69,19 +103,32 @@ HWY_INLINE VI encode_channel(DF df, VF value, bool srgb) {
         return hn::ConvertTo(
             di, hn::Add(hn::IfThenElseZero(hn::Ge(v, hn::Zero(df)), v), hn::Set(df, 0.5f)));
     }
-    const shading::SrgbByteTables& tables = shading::srgb_byte_tables();
     const MF positive = hn::Gt(value, hn::Zero(df));  // false for NaN
     const MF below_one = hn::Lt(value, hn::Set(df, 1.0f));
     const VF clamped = hn::IfThenElseZero(hn::And(positive, below_one), value);
-    const VI slice = hn::ConvertTo(di, hn::Mul(clamped, hn::Set(df, 4096.0f)));
-    VI b = hn::GatherIndex(di, first_bytes(), slice);
+    const VF scaled = hn::Mul(clamped, hn::Set(df, 4096.0f));  // exact: a power of two
+    const VI slice = hn::ConvertTo(di, scaled);
+    VI b;
+    MF past_step;  // lesson 06's `value >= steps[b]`, which adds one to b
+    if (one_gather) {
+        const VI entry = hn::GatherIndex(di, srgb_entries(), slice);
+        b = hn::And(hn::ShiftRight<24>(entry), hn::Set(di, 255));
+        const VF step = hn::Mul(hn::ConvertTo(df, hn::And(entry, hn::Set(di, (1 << 24) - 1))),
+                                hn::Set(df, 1.0f / 16777216.0f));
+        // Both sides exact, so this is the same comparison as below.
+        past_step = hn::Ge(hn::Sub(scaled, hn::ConvertTo(df, slice)), step);
+    } else {
+        b = hn::GatherIndex(di, first_bytes(), slice);
+        past_step =
+            hn::Ge(clamped, hn::GatherIndex(df, shading::srgb_byte_tables().steps.data(), b));
+    }
     // No slice holds more than one step: one comparison finishes the search.
-    const VF next = hn::GatherIndex(df, tables.steps.data(), b);
-    b = hn::IfThenElse(hn::RebindMask(di, hn::Ge(clamped, next)), hn::Add(b, hn::Set(di, 1)), b);
+    b = hn::IfThenElse(hn::RebindMask(di, past_step), hn::Add(b, hn::Set(di, 1)), b);
     b = hn::IfThenElseZero(hn::RebindMask(di, positive), b);
     return hn::IfThenElse(hn::RebindMask(di, hn::And(positive, hn::Not(below_one))),
                           hn::Set(di, 255), b);
 }
+// [/doc:encode-channel]
 
 // Lesson 08's visibility() at each lane of `lit` (a kept lane the key light
 // reaches), 1 at the others (no light there to take away, or a colour thrown
@@ -250,9 +297,9 @@ HWY_NOINLINE VU shade(DF df, const Material& m, const Fragments& f, MF active) {
     const VF bl = hn::MulAdd(specular.z, shine, hn::Mul(albedo.z, diffuse.z));
     const DU du;
     const DI di;
-    const VU red = hn::BitCast(du, encode_channel(df, r, m.srgb));
-    const VU green = hn::BitCast(du, encode_channel(df, g, m.srgb));
-    const VU blue = hn::BitCast(du, encode_channel(df, bl, m.srgb));
+    const VU red = hn::BitCast(du, encode_channel(df, r, m.srgb, m.srgb_one_gather));
+    const VU green = hn::BitCast(du, encode_channel(df, g, m.srgb, m.srgb_one_gather));
+    const VU blue = hn::BitCast(du, encode_channel(df, bl, m.srgb, m.srgb_one_gather));
     (void)di;
     return hn::Or(hn::Or(red, hn::ShiftLeft<8>(green)),
                   hn::Or(hn::ShiftLeft<16>(blue), hn::Set(du, 0xff000000u)));

@@ -230,7 +230,7 @@ void RenderTile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, Ti
     counts.copy_ns += ns(Clock::now() - shaded);
 }
 
-void EncodeSrgb(const float* values, std::uint8_t* bytes, std::size_t count) {
+void EncodeSrgb(const float* values, std::uint8_t* bytes, std::size_t count, bool one_gather) {
     const DF df;
     const DI di;
     const std::size_t n = hn::Lanes(df);
@@ -239,7 +239,7 @@ void EncodeSrgb(const float* values, std::uint8_t* bytes, std::size_t count) {
     for (std::size_t i = 0; i < count; i += n) {
         const std::size_t m = std::min(n, count - i);
         for (std::size_t j = 0; j < n; ++j) in[j] = j < m ? values[i + j] : 0.0f;
-        hn::Store(encode_channel(df, hn::Load(df, in), true), di, out);
+        hn::Store(encode_channel(df, hn::Load(df, in), true, one_gather), di, out);
         for (std::size_t j = 0; j < m; ++j) bytes[i + j] = static_cast<std::uint8_t>(out[j]);
     }
 }
@@ -283,8 +283,8 @@ void render_tile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, T
 void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     HWY_DYNAMIC_DISPATCH(RasterizeTile)(work, buffers, counts);
 }
-void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count) {
-    HWY_DYNAMIC_DISPATCH(EncodeSrgb)(values, bytes, count);
+void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count, bool one_gather) {
+    HWY_DYNAMIC_DISPATCH(EncodeSrgb)(values, bytes, count, one_gather);
 }
 const char* simd_target() {
     return HWY_DYNAMIC_DISPATCH(SimdTarget)();

@@ -52,6 +52,9 @@ struct Techniques {
     // test and shade only the rows of a block that the triangle's box
     // reaches (a small triangle's one or two of the eight)
     bool block_rows = true;
+    // encode sRGB with one gather per channel (lesson 06's two tables folded
+    // into one), rather than a gather of the first byte and one of the step
+    bool srgb_one_gather = true;
 };
 
 struct TileWork {
@@ -86,8 +89,9 @@ void render_tile(const TileWork& work, TileBuffers& buffers, rl::Image& frame, T
 void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& counts);
 
 // The SIMD sRGB encoding of linear values, for a test to hold against
-// lesson 06's encode(): bytes[i] for values[i], count a multiple of nothing.
-void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count);
+// lesson 06's encode(): bytes[i] for values[i], count a multiple of nothing;
+// one_gather as Techniques::srgb_one_gather.
+void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count, bool one_gather);
 
 // The name of the instruction set the kernels run with on this CPU.
 const char* simd_target();

@@ -237,7 +237,7 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     o.vertex_cache = false;
     o.parallel = false;
     o.threads = 1;
-    o.techniques = {false, false, false, false, false, false};
+    o.techniques = {false, false, false, false, false, false, false};
     o.specular_in_normal_alpha = false;
     std::vector<Step> out;
     out.push_back({"one thread, scalar, per corner", o, scalar});
@@ -260,6 +260,8 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     out.push_back({"+ the queue carried across triangles", o, simd_sets.front()});
     o.techniques.block_rows = true;
     out.push_back({"+ only the rows of a block a triangle reaches", o, simd_sets.front()});
+    o.techniques.srgb_one_gather = true;
+    out.push_back({"+ sRGB with one gather", o, simd_sets.front()});
     o.specular_in_normal_alpha = true;
     out.push_back({"+ the specular map in the normal map's alpha", o, simd_sets.front()});
     o.parallel = true;

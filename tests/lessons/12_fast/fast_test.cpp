@@ -421,6 +421,7 @@ TEST(Image, EachTechniqueOffLeavesTheImageAlone) {
     EXPECT_EQ(with([](auto& o) { o.techniques.hierarchical_depth = false; }), reference);
     EXPECT_EQ(with([](auto& o) { o.techniques.across_triangles = false; }), reference);
     EXPECT_EQ(with([](auto& o) { o.techniques.block_rows = false; }), reference);
+    EXPECT_EQ(with([](auto& o) { o.techniques.srgb_one_gather = false; }), reference);
     // Shading by blocks steps the weights from each block's corner, not from
     // the tile's: a level apart in a few pixels at most; shading every passing
     // pixel at once (no visibility buffer) ends on the same colours as that.
@@ -527,15 +528,23 @@ TEST(Encoding, SimdSrgbMatchesLessonSixByteForByte) {
         values.push_back(std::nextafter(step, 0.0f));
         values.push_back(std::nextafter(step, 2.0f));
     }
+    for (int i = 0; i <= 4096; ++i) {  // each slice's ends, where the one gather changes entry
+        const float end = static_cast<float>(i) / 4096.0f;
+        values.push_back(end);
+        values.push_back(std::nextafter(end, 0.0f));
+        values.push_back(std::nextafter(end, 2.0f));
+    }
     for (int i = 0; i <= 200000; ++i) values.push_back(static_cast<float>(i) / 200000.0f);
     std::vector<std::uint8_t> bytes(values.size());
-    for (std::int64_t target : fast::simd_targets()) {
-        hwy::SetSupportedTargetsForTest(target);
-        fast::encode_srgb(values.data(), bytes.data(), values.size());
-        for (std::size_t i = 0; i < values.size(); ++i)
-            ASSERT_EQ(bytes[i], shading::encode({values[i], 0, 0}, shading::Output::srgb).r)
-                << values[i] << " on " << hwy::TargetName(target);
-    }
+    for (std::int64_t target : fast::simd_targets())
+        for (const bool one_gather : {true, false}) {
+            hwy::SetSupportedTargetsForTest(target);
+            fast::encode_srgb(values.data(), bytes.data(), values.size(), one_gather);
+            for (std::size_t i = 0; i < values.size(); ++i)
+                ASSERT_EQ(bytes[i], shading::encode({values[i], 0, 0}, shading::Output::srgb).r)
+                    << values[i] << " on " << hwy::TargetName(target)
+                    << (one_gather ? ", one gather" : ", two gathers");
+        }
     hwy::SetSupportedTargetsForTest(0);
 }
 
