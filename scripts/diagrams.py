@@ -45,6 +45,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
                              unbiased nearest depth (a nearer triangle lost) or by the biased one
   12_texel_words.svg         a packed texel's 32-bit word: the normal map's RGB and, in its alpha
                              byte, the specular map's value; a pixel's gathers before and after
+  12_srgb_entry.svg          lesson 06's sRGB search as two dependent gathers, or one gather of a
+                             32-bit entry (the slice's first byte, its step as a 24-bit fraction)
   12_shadow_lookup.svg       one vector's eight pixels looked up in the shadow map: eight points,
                              each with its own 2x2 texels, scattered over the map
   13_frame_path.svg          one frame of the viewer, from the keyboard to the window
@@ -1168,6 +1170,71 @@ def texel_words(out):
     save(figure, out, "12_texel_words.svg")
 
 
+def srgb_entry(out):
+    # Left: the two gathers of lesson 06's search (the second waits for the
+    # first), and the one gather of a folded entry. Right: one slice of
+    # [0, 1) with its step, the worked example of docs/12_fast.md.
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.8, 3.4),
+                                         gridspec_kw={"width_ratios": [1.25, 1]})
+
+    def box(x, y, w, text, colour=SOFT):
+        left.add_patch(Rectangle((x, y), w, 0.55, fc=colour, ec=INK, lw=0.8))
+        left.text(x + w / 2, y + 0.275, text, ha="center", va="center", fontsize=7.5)
+
+    def arrow(x0, x1, y):
+        left.annotate("", xy=(x1, y), xytext=(x0, y), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1))
+
+    left.text(0, 3.05, "before: two gathers, the second waits for the first", fontsize=8, color=LINE)
+    box(0, 2.2, 1.3, "slice = 4096 v")
+    arrow(1.3, 1.7, 2.475)
+    box(1.7, 2.2, 1.5, "gather first[slice]\n(4096 bytes)", "#fff4c8")
+    arrow(3.2, 3.6, 2.475)
+    box(3.6, 2.2, 1.5, "gather steps[b]\n(256 floats)", "#fff4c8")
+    arrow(5.1, 5.4, 2.475)
+    box(5.4, 2.2, 0.9, "v >= step?")
+    left.text(0, 1.45, "after: one gather of a 32-bit entry per slice", fontsize=8, color=LINE)
+    box(0, 0.6, 1.3, "slice = 4096 v")
+    arrow(1.3, 1.7, 0.875)
+    box(1.7, 0.6, 1.5, "gather entry[slice]", "#fff4c8")
+    arrow(3.2, 3.6, 0.875)
+    left.add_patch(Rectangle((3.6, 0.6), 0.8, 0.55, fc=SOFT, ec=INK, lw=0.8))
+    left.add_patch(Rectangle((4.4, 0.6), 1.9, 0.55, fc="#eeeeee", ec=INK, lw=0.8))
+    left.text(4.0, 0.875, "byte", ha="center", va="center", fontsize=7.5)
+    left.text(5.35, 0.875, "step within the slice", ha="center", va="center", fontsize=7.5)
+    left.text(4.0, 0.38, "bits 24-31", ha="center", fontsize=7, color=LINE)
+    left.text(5.35, 0.38, "bits 0-23: fraction x 2^24", ha="center", fontsize=7, color=LINE)
+    left.text(3.15, -0.1, "then: (4096 v - slice) >= fraction? (both exact)", ha="center", fontsize=7.5)
+    left.set_xlim(-0.1, 6.4)
+    left.set_ylim(-0.3, 3.3)
+    left.axis("off")
+    left.set_title("lesson 06's search for a channel's byte, in vectors", fontsize=9)
+
+    # The worked example: slice 876 holds the step from byte 127 to 128 at
+    # 0.7125 of its width.
+    step = 0.7125244140625
+    right.add_patch(Rectangle((0, 0), step, 0.5, fc=SOFT, ec=INK, lw=0.8))
+    right.add_patch(Rectangle((step, 0), 1 - step, 0.5, fc="#fff4c8", ec=INK, lw=0.8))
+    right.text(step / 2, 0.25, "byte 127", ha="center", va="center", fontsize=8)
+    right.text((1 + step) / 2, 0.25, "128", ha="center", va="center", fontsize=8)
+    right.plot([step, step], [-0.15, 0.65], color=ACCENT, lw=1.5)
+    right.text(step, 0.72, "step: 0.7125244140625\n(11 954 176 / 2^24)", ha="center", fontsize=7.5,
+               color=ACCENT)
+    right.text(0, -0.3, "876/4096", ha="center", fontsize=7.5)
+    right.text(1, -0.3, "877/4096", ha="center", fontsize=7.5)
+    within = 0.7078247
+    right.plot([within], [0], marker="^", color=INK)
+    right.text(0.42, -0.95, "v = 0.21404: within the slice at 0.7078,\njust below the step: byte 127",
+               ha="center", fontsize=7.5)
+    right.annotate("", xy=(within, -0.05), xytext=(0.5, -0.55),
+                   arrowprops=dict(arrowstyle="->", color=INK, lw=0.8))
+    right.set_xlim(-0.15, 1.15)
+    right.set_ylim(-1.1, 1.4)
+    right.axis("off")
+    right.set_title("slice 876 of [0, 1): one step inside it", fontsize=9)
+    figure.suptitle("sRGB encoding: lesson 06's two tables folded into one entry per slice", fontsize=10)
+    save(figure, out, "12_srgb_entry.svg")
+
+
 def shadow_lookup(out):
     # A vector of 8 lanes: pixels of a triangle on the floor, from the lane
     # queue. Each lands at its own point of the shadow map, along a diagonal
@@ -1709,7 +1776,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, fragment_queue, block_rows, texel_words, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, fragment_queue, block_rows, texel_words, srgb_entry, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 

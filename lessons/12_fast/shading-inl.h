@@ -55,7 +55,6 @@ HWY_INLINE VF highlight(DF df, VF alignment, float shininess) {
 // inside the slice, as a fraction of the slice (exact: see
 // docs/12_fast.md, "sRGB with one gather"), or 2^24 - 1 where the slice
 // holds no step (no fraction of a value in the slice reaches it).
-// [doc:srgb-entries]
 const std::int32_t* srgb_entries() {
     static const auto table = [] {
         const shading::SrgbByteTables& tables = shading::srgb_byte_tables();
@@ -78,7 +77,6 @@ const std::int32_t* srgb_entries() {
     }();
     return table.data();
 }
-// [/doc:srgb-entries]
 
 // Lesson 06's table of first bytes, widened to 32 bits for gathers (the
 // lab's step before the tables were folded).
