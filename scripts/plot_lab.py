@@ -63,12 +63,12 @@ def format_cell(text):
     return f"{value:.3g}"
 
 
-def write_table(rows, columns, path, front_keys, key):
-    lines = ["| " + " | ".join(columns) + " | best trade-off |",
-             "|" + "---|" * (len(columns) + 1)]
+def write_table(rows, columns, path, front_keys, key, fronts=True):
+    lines = ["| " + " | ".join(columns) + (" | best trade-off |" if fronts else " |"),
+             "|" + "---|" * (len(columns) + (1 if fronts else 0))]
     for row in rows:
-        mark = "yes" if key(row) in front_keys else ""
-        lines.append("| " + " | ".join(format_cell(row[c]) for c in columns) + f" | {mark} |")
+        mark = (" " + ("yes" if key(row) in front_keys else "") + " |") if fronts else ""
+        lines.append("| " + " | ".join(format_cell(row[c]) for c in columns) + " |" + mark)
     path.write_text("\n".join(lines) + "\n")
 
 
@@ -405,13 +405,16 @@ def bars_with_fronts(axes, rows, options, label, key, front_keys):
     groups = {}
     for row in rows:
         groups.setdefault(row[options.group] if options.group else "", []).append(row)
-    for members in groups.values():
+    for members in groups.values() if not options.no_fronts else []:
         front_keys.update(key(members[i]) for i in pareto_front(*points_and_spreads(members, options)))
     shown = [c for c in label if c not in (options.group, options.panel)]
     positions = list(range(len(rows)))[::-1]  # the first row at the top
     times = [number(r[options.x]) for r in rows]
     best = [key(r) in front_keys for r in rows]
-    axes.barh(positions, times, color=["C0" if b else "#9ab8d8" for b in best], height=0.7, zorder=2)
+    axes.barh(positions, times, color=["C0" if b or options.no_fronts else "#9ab8d8" for b in best],
+              height=0.7, zorder=2)
+    if options.no_fronts:
+        axes.axvline(0, color="0.3", lw=0.8, zorder=3)
     if options.x_spread:
         low, high = options.x_spread.split(",")
         axes.errorbar(times, positions,
@@ -458,6 +461,9 @@ def main():
                         help="draw each row as a bar of its time, its error written beside it "
                              "(for steps whose errors are mostly equal)")
     parser.add_argument("--y-short", default="error", help="with --bars: the error's name by each bar")
+    parser.add_argument("--no-fronts", action="store_true",
+                        help="with --bars: bars of a measure that is not a trade-off (no best trade-offs "
+                             "marked; the title says what the whiskers are)")
     parser.add_argument("--zoom", metavar="X0,X1,Y0,Y1",
                         help="draw the points in this box again, labelled, in an inset (a cluster)")
     parser.add_argument("--zoom-at", metavar="LEFT,BOTTOM,WIDTH,HEIGHT", default="0.3,0.4,0.45,0.5",
@@ -538,7 +544,9 @@ def main():
             placements.append((axes, labels, points, []))
         if options.panel:
             axes.set_title(f"{options.panel} {panel}", fontsize=9)
-    if options.bars:
+    if options.no_fronts:
+        title = options.title
+    elif options.bars:
         title = options.title + ("\n(dark: best trade-offs; whiskers: fastest to slowest run; "
                                  "times within 15% or with overlapping runs are ties)")
     else:
@@ -560,7 +568,7 @@ def main():
 
     if options.table:
         columns = options.columns.split(",") if options.columns else list(rows[0].keys())
-        write_table(rows, columns, options.table, front_keys, key)
+        write_table(rows, columns, options.table, front_keys, key, fronts=not options.no_fronts)
         print(f"wrote {options.table}")
 
 

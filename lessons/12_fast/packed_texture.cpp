@@ -8,8 +8,10 @@
 namespace fast {
 
 PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
-                             const textures::TexelEncoding* encoding)
-    : decoded(encoding != nullptr), levels(all_levels ? chain.levels() : 1) {
+                             const textures::TexelEncoding* encoding, bool one_word_)
+    : decoded(encoding != nullptr),
+      one_word(encoding != nullptr && one_word_),
+      levels(all_levels ? chain.levels() : 1) {
     if (levels > kMaxLevels) throw std::invalid_argument("a texture with more than 32 mip levels");
     // Each row is stored with one texel more, a copy of its first: with the
     // wrap `repeat`, a bilinear lookup's two texels of a row are then always
@@ -22,9 +24,14 @@ PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
     if (total > static_cast<std::size_t>(INT32_MAX))
         throw std::invalid_argument("a texture too large for 32-bit texel offsets");
     texels.resize(total);
-    if (encoding) blue_words.resize(total);
+    if (decoded && !one_word) blue_words.resize(total);
     const auto wide = [&](std::uint8_t byte) {
         return static_cast<std::uint32_t>(std::lround(encoding->value[byte] * 65535.0f));
+    };
+    // The square root spends the bits where the eye (and sRGB) tells levels
+    // apart: near black, where a level is a small step of light.
+    const auto root = [&](std::uint8_t byte, float largest) {
+        return static_cast<std::uint32_t>(std::lround(std::sqrt(encoding->value[byte]) * largest));
     };
     std::size_t at = 0;
     for (int i = 0; i < kMaxLevels; ++i) {
@@ -39,6 +46,9 @@ PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
                     const rl::Rgba texel = image.at(x == w ? 0 : x, y);
                     if (!encoding) {
                         std::memcpy(&texels[at], &texel, sizeof texel);
+                    } else if (one_word) {
+                        texels[at] = root(texel.r, 2047.0f) | root(texel.g, 2047.0f) << 11 |
+                                     root(texel.b, 1023.0f) << 22;
                     } else {
                         texels[at] = wide(texel.r) | wide(texel.g) << 16;
                         blue_words[at] = wide(texel.b);

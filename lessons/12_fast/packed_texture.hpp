@@ -21,14 +21,18 @@ struct PackedTexture {
     static constexpr int kMaxLevels = 32;  // a 2^31-texel side has 32 levels
     // Every level, or level 0 alone (for the filters that read no other).
     // With an encoding (sRGB colour textures), the texels are stored decoded
-    // instead: each channel's value in 16 bits, red and green in one word and
-    // blue in another, so that a lookup gathers two words and no table (the
-    // values are within 1/131070 of the encoding's, far below what a byte
-    // of output can show).
+    // instead, so that a lookup needs no table: each channel's value in 16
+    // bits, red and green in one word and blue in another (within 1/131070
+    // of the encoding's values); or, with one_word, the square root of each
+    // value in 11, 11 and 10 bits of one word, so that a lookup gathers half
+    // the words and squares what it reads (within 0.16 of an output level:
+    // docs/12_fast.md, "The albedo in one word").
     explicit PackedTexture(const textures::MipChain& chain, bool all_levels = true,
-                           const textures::TexelEncoding* encoding = nullptr);
+                           const textures::TexelEncoding* encoding = nullptr,
+                           bool one_word = false);
     std::vector<std::uint32_t> texels;  // level 0, then 1, ...; rows bottom first
     bool decoded = false;               // texels hold red | green << 16, blue_words blue
+    bool one_word = false;  // decoded: texels hold sqrt'd red | green << 11 | blue << 22
     std::vector<std::uint32_t> blue_words;
     // Per level (padded to kMaxLevels with the last level, so that a gather
     // with a clamped index never reads past the table):

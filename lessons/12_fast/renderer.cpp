@@ -84,7 +84,8 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
     // The diffuse texture holds sRGB colours unless the output is naive (lesson 06).
     out.albedo = std::make_unique<PackedTexture>(
         model.lit.model.texture, all_levels,
-        options.render.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr);
+        options.render.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr,
+        options.albedo_in_one_word);
     out.tangent_map = packed(model.maps.tangent_normals, all_levels);
     out.object_map = packed(model.maps.object_normals, all_levels);
     out.specular_map = packed(model.maps.specular, all_levels);

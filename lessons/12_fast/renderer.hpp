@@ -46,6 +46,9 @@ struct FastOptions {
     // match, read by the normal map's lookups (docs/12_fast.md, "Textures
     // laid out for the gathers").
     bool specular_in_normal_alpha = true;
+    // The decoded albedo in one word per texel rather than two (docs/12_fast.md,
+    // "The albedo in one word").
+    bool albedo_in_one_word = true;
     bool parallel = true;   // the vertex stage and the tiles on the threads (or on one)
     Techniques techniques;  // the tile kernels' (tile_kernels.hpp)
     // A shadow map's pass (lesson 08's first pass) rather than a picture:

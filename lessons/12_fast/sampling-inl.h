@@ -81,7 +81,7 @@ HWY_INLINE VU gather_words(const std::vector<std::uint32_t>& words, VI index) {
 }
 HWY_INLINE Fetched fetch(const PackedTexture& t, VI index, int channels) {
     Fetched f{gather_words(t.texels, index), hn::Zero(DU())};
-    if (t.decoded && channels > 2) f.blue = gather_words(t.blue_words, index);
+    if (t.decoded && !t.one_word && channels > 2) f.blue = gather_words(t.blue_words, index);
     return f;
 }
 // The texels at index and index + 1 of every lane: a row's two texels of a
@@ -112,10 +112,19 @@ HWY_INLINE void fetch_pairs(const PackedTexture& t, VI index, int channels, Fetc
                             Fetched& right) {
     gather_pairs(t.texels, index, left.word, right.word);
     left.blue = right.blue = hn::Zero(DU());
-    if (t.decoded && channels > 2) gather_pairs(t.blue_words, index, left.blue, right.blue);
+    if (t.decoded && !t.one_word && channels > 2)
+        gather_pairs(t.blue_words, index, left.blue, right.blue);
 }
 HWY_INLINE VF channel(DF df, const PackedTexture& t, const Fetched& f, int c) {
     const DI di;
+    if (t.one_word) {  // the value's square root in 11, 11, 10 bits: squared back
+        const VU bits = c == 0   ? hn::And(f.word, hn::Set(DU(), 0x7ffu))
+                        : c == 1 ? hn::And(hn::ShiftRight<11>(f.word), hn::Set(DU(), 0x7ffu))
+                                 : hn::ShiftRight<22>(f.word);
+        const VF root = hn::Mul(hn::ConvertTo(df, hn::BitCast(di, bits)),
+                                hn::Set(df, c == 2 ? 1.0f / 1023 : 1.0f / 2047));
+        return hn::Mul(root, root);
+    }
     if (t.decoded) {
         const VU word = c == 0   ? hn::And(f.word, hn::Set(DU(), 0xffffu))
                         : c == 1 ? hn::ShiftRight<16>(f.word)

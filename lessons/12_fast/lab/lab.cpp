@@ -14,12 +14,18 @@
 //      clearing colour and depth and writing every pixel once;
 //   3. 12_triangles.csv: the sphere from 2 thousand to 2 million triangles
 //      at 1024x1024, ours and llvmpipe;
-//   4. 12_stages.csv: where the fast path's time goes.
+//   4. 12_stages.csv: where the fast path's time goes;
+//   5. 12_pairs.csv: each technique of the finished fast path turned off,
+//      in frames alternated one by one with the fast path as it is (paired
+//      frames: a disturbance of the machine slows both of a pair, and the
+//      ratio within each pair keeps gains of a few per cent that the five
+//      runs of the steps cannot tell from noise).
 #include <benchmark/benchmark.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -197,6 +203,49 @@ void register_cell(Cell& c) {
     b->Unit(benchmark::kMillisecond);
 }
 
+// A pair of renderers, one with a technique off: `frames` pairs of frames,
+// the order within a pair alternating, each frame timed alone.
+struct Pair {
+    const Scene* scene;
+    int size;
+    std::string technique;
+    fast::FastOptions off;
+    int frames;
+    std::string name;  // the benchmark's
+    // The run's results:
+    std::vector<double> ms_off, ms_on, ratio;  // per pair: on / off
+    int levels_apart = 0;                      // the last pair's two images
+};
+
+void time_pair(benchmark::State& state, Pair* p) {
+    using Clock = std::chrono::steady_clock;
+    fast::Renderer off(p->scene->models, p->size, p->size, p->off);
+    fast::Renderer on(p->scene->models, p->size, p->size, {});
+    off.render(p->scene->camera), on.render(p->scene->camera);  // buffers grown, untimed
+    p->ms_off.clear(), p->ms_on.clear(), p->ratio.clear();
+    for (auto _ : state)
+        for (int f = 0; f < p->frames; ++f) {
+            const perspective::Camera camera =
+                fast::orbit(p->scene->camera, f % kOrbitFrames, kOrbitFrames);
+            double ms[2];
+            for (int k = 0; k < 2; ++k) {
+                const int which = (k + f) % 2;  // 0: off, 1: on
+                const Clock::time_point start = Clock::now();
+                (which == 0 ? off : on).render(camera);
+                ms[which] = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+            }
+            p->ms_off.push_back(ms[0]), p->ms_on.push_back(ms[1]);
+            p->ratio.push_back(ms[1] / ms[0]);
+        }
+    p->levels_apart = rl::compare_images(off.frame(), on.frame(), 1).max_abs;
+}
+
+// The value below which a share q of `values` lies (nearest rank).
+double quantile(std::vector<double> values, double q) {
+    std::sort(values.begin(), values.end());
+    return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1) + 0.5)];
+}
+
 // ------------------------------------------------------------- the images
 
 rl::Image fast_frame(const Scene& s, int size, const fast::FastOptions& o, std::int64_t simd) {
@@ -239,6 +288,7 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     o.threads = 1;
     o.techniques = {false, false, false, false, false, false, false};
     o.specular_in_normal_alpha = false;
+    o.albedo_in_one_word = false;
     std::vector<Step> out;
     out.push_back({"one thread, scalar, per corner", o, scalar});
     o.vertex_cache = true;
@@ -264,6 +314,8 @@ std::vector<Step> steps(std::int64_t scalar, const std::vector<std::int64_t>& si
     out.push_back({"+ sRGB with one gather", o, simd_sets.front()});
     o.specular_in_normal_alpha = true;
     out.push_back({"+ the specular map in the normal map's alpha", o, simd_sets.front()});
+    o.albedo_in_one_word = true;
+    out.push_back({"+ the albedo in one word", o, simd_sets.front()});
     o.parallel = true;
     o.threads = kThreads;
     out.push_back({"+ 2 threads: the fast path", o, simd_sets.front()});
@@ -367,7 +419,7 @@ int main(int argc, char** argv) {
         // Tables of an earlier run must not pass for this one's when this
         // run (narrowed by --benchmark_filter) leaves them out.
         const char* const kTables[] = {"12_steps.csv", "12_sizes.csv", "12_triangles.csv",
-                                       "12_stages.csv"};
+                                       "12_stages.csv", "12_pairs.csv"};
         for (const char* table : kTables) std::filesystem::remove(options.out_dir / table);
         // 3. The triangle counts.
         std::vector<Scene> spheres;
@@ -394,6 +446,46 @@ int main(int argc, char** argv) {
                 triangle_cells.push_back(
                     add(s, step_size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
         }
+        // 5. The pairs: each technique off against the fast path as it is.
+        const std::pair<const char*, void (*)(fast::FastOptions&)> techniques[] = {
+            {"vertex cache", [](fast::FastOptions& o) { o.vertex_cache = false; }},
+            {"8x8 blocks accepted and rejected whole",
+             [](fast::FastOptions& o) { o.techniques.coarse_blocks = false; }},
+            {"a depth bound per block",
+             [](fast::FastOptions& o) { o.techniques.hierarchical_depth = false; }},
+            {"the queue carried across triangles",
+             [](fast::FastOptions& o) { o.techniques.across_triangles = false; }},
+            {"only the rows of a block a triangle reaches",
+             [](fast::FastOptions& o) { o.techniques.block_rows = false; }},
+            {"sRGB with one gather",
+             [](fast::FastOptions& o) { o.techniques.srgb_one_gather = false; }},
+            {"the specular map in the normal map's alpha",
+             [](fast::FastOptions& o) { o.specular_in_normal_alpha = false; }},
+            {"the albedo in one word", [](fast::FastOptions& o) { o.albedo_in_one_word = false; }},
+        };
+        std::vector<std::unique_ptr<Pair>> pairs;
+        for (int k = 0; k < 2; ++k)
+            for (const auto& [technique, turn_off] : techniques) {
+                const Scene& s = scenes[static_cast<std::size_t>(k)];
+                fast::FastOptions off;
+                turn_off(off);
+                pairs.push_back(std::make_unique<Pair>(Pair{&s,
+                                                            step_size,
+                                                            technique,
+                                                            off,
+                                                            options.quick ? 4 : 200,
+                                                            "pairs/" + s.name + "/" + technique,
+                                                            {},
+                                                            {},
+                                                            {},
+                                                            0}));
+            }
+        if (!one_thread_run)
+            for (auto& p : pairs)
+                benchmark::RegisterBenchmark(p->name.c_str(), time_pair, p.get())
+                    ->Unit(benchmark::kMillisecond)
+                    ->Iterations(1)
+                    ->Repetitions(1);
         const std::set<const Cell*> in_child(one_thread_cells.begin(), one_thread_cells.end());
         for (auto& c : cells)
             if (!in_child.count(c.get())) register_cell(*c);
@@ -503,7 +595,23 @@ int main(int argc, char** argv) {
         // 4. Where the time goes: the stage timers, averaged over an orbit
         // after a first frame (the tiles' split is summed over both threads,
         // so it is shown per thread).
-        const bool narrowed = written.size() < 3;
+        // 5. The pairs.
+        if (std::all_of(pairs.begin(), pairs.end(),
+                        [](const auto& p) { return !p->ratio.empty(); })) {  // (each ran)
+            rl::ResultsTable pairs_table({"scene", "size", "technique", "pairs", "ms_without",
+                                          "ms_with", "percent_saved", "saved_q1", "saved_q3",
+                                          "levels_apart"});
+            for (const auto& p : pairs)
+                pairs_table.add_row(
+                    {p->scene->name, static_cast<long long>(p->size), p->technique,
+                     static_cast<long long>(p->ratio.size()), quantile(p->ms_off, 0.5),
+                     quantile(p->ms_on, 0.5), 100 * (1 - quantile(p->ratio, 0.5)),
+                     100 * (1 - quantile(p->ratio, 0.75)), 100 * (1 - quantile(p->ratio, 0.25)),
+                     static_cast<long long>(p->levels_apart)});
+            pairs_table.write_csv(options.out_dir / "12_pairs.csv");
+            written.push_back("12_pairs.csv");
+        }
+        const bool narrowed = written.size() < 4;
         if (narrowed) {  // the stages are timed in full runs only
             if (written.empty())
                 throw std::runtime_error("--benchmark_filter left no section of the lab whole");
@@ -542,8 +650,10 @@ int main(int argc, char** argv) {
                 row("tiles, in all (clock)", sum.tiles);
             }
         stages_table.write_csv(options.out_dir / "12_stages.csv");
-        std::printf("wrote 12_steps.csv, 12_sizes.csv, 12_triangles.csv and 12_stages.csv to %s\n",
-                    options.out_dir.string().c_str());
+        std::printf(
+            "wrote 12_steps.csv, 12_sizes.csv, 12_triangles.csv, 12_pairs.csv and 12_stages.csv "
+            "to %s\n",
+            options.out_dir.string().c_str());
         return 0;
     });
 }
