@@ -244,6 +244,25 @@ void EncodeSrgb(const float* values, std::uint8_t* bytes, std::size_t count, boo
     }
 }
 
+void DecodeTexels(const PackedTexture& texture, const std::int32_t* index, std::size_t count,
+                  float* rgb) {
+    const DF df;
+    const DI di;
+    const std::size_t n = hn::Lanes(df);
+    alignas(64) std::int32_t at[hn::MaxLanes(di)];
+    alignas(64) float out[hn::MaxLanes(df)];
+    for (std::size_t i = 0; i < count; i += n) {
+        const std::size_t m = std::min(n, count - i);
+        for (std::size_t j = 0; j < n; ++j) at[j] = j < m ? index[i + j] : index[i];
+        const Fetched texel = fetch(texture, hn::Load(di, at), 3);
+        for (int c = 0; c < 3; ++c) {
+            hn::Store(channel(df, texture, texel, c), df, out);
+            for (std::size_t j = 0; j < m; ++j)
+                rgb[3 * (i + j) + static_cast<std::size_t>(c)] = out[j];
+        }
+    }
+}
+
 const char* SimdTarget() {
     return hwy::TargetName(HWY_TARGET);
 }
@@ -258,6 +277,7 @@ namespace fast {
 HWY_EXPORT(RenderTile);
 HWY_EXPORT(RasterizeTile);
 HWY_EXPORT(EncodeSrgb);
+HWY_EXPORT(DecodeTexels);
 HWY_EXPORT(SimdTarget);
 
 TileCounts& TileCounts::operator+=(const TileCounts& o) {
@@ -285,6 +305,11 @@ void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& coun
 }
 void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count, bool one_gather) {
     HWY_DYNAMIC_DISPATCH(EncodeSrgb)(values, bytes, count, one_gather);
+}
+
+void decode_texels(const PackedTexture& texture, const std::int32_t* index, std::size_t count,
+                   float* rgb) {
+    HWY_DYNAMIC_DISPATCH(DecodeTexels)(texture, index, count, rgb);
 }
 const char* simd_target() {
     return HWY_DYNAMIC_DISPATCH(SimdTarget)();

@@ -93,6 +93,12 @@ void rasterize_tile(const TileWork& work, TileBuffers& buffers, TileCounts& coun
 // one_gather as Techniques::srgb_one_gather.
 void encode_srgb(const float* values, std::uint8_t* bytes, std::size_t count, bool one_gather);
 
+// The first three channels of the packed texels at `count` indices, as the
+// shader's lookups decode them, for a test to hold against the values the
+// texels stand for: rgb[3 * i + c] for texel index[i].
+void decode_texels(const PackedTexture& texture, const std::int32_t* index, std::size_t count,
+                   float* rgb);
+
 // The name of the instruction set the kernels run with on this CPU.
 const char* simd_target();
 

@@ -22,6 +22,7 @@
 #include "07_normal_mapping/scene.hpp"
 #include "12_fast/lab/coverage_check.hpp"
 #include "12_fast/orbit.hpp"
+#include "12_fast/packed_texture.hpp"
 #include "12_fast/renderer.hpp"
 #include "hwy/targets.h"
 #include "rasterlab/checkpoint.hpp"
@@ -422,6 +423,10 @@ TEST(Image, EachTechniqueOffLeavesTheImageAlone) {
     EXPECT_EQ(with([](auto& o) { o.techniques.across_triangles = false; }), reference);
     EXPECT_EQ(with([](auto& o) { o.techniques.block_rows = false; }), reference);
     EXPECT_EQ(with([](auto& o) { o.techniques.srgb_one_gather = false; }), reference);
+    // The albedo's 16-bit words against its square roots in one word: the
+    // values differ by less than a fifth of a level (the encoding test).
+    expect_lesson07_tolerance(reference, with([](auto& o) { o.albedo_in_one_word = false; }),
+                              "albedo in two words");
     // Shading by blocks steps the weights from each block's corner, not from
     // the tile's: a level apart in a few pixels at most; shading every passing
     // pixel at once (no visibility buffer) ends on the same colours as that.
@@ -546,6 +551,50 @@ TEST(Encoding, SimdSrgbMatchesLessonSixByteForByte) {
                     << (one_gather ? ", one gather" : ", two gathers");
         }
     hwy::SetSupportedTargetsForTest(0);
+}
+
+// The decoded albedo: every byte of each channel, as the lookups read it,
+// against lesson 06's value of that byte, in fractions of the output level
+// at that value (the step between the sRGB bytes either side): the 16-bit
+// words within 0.03 of a level, the square roots in one word within 0.2
+// (0.16 at worst, for blue's 10 bits near black; docs/12_fast.md, "The
+// albedo in one word").
+TEST(Encoding, TheDecodedAlbedoIsWithinAFifthOfALevel) {
+    rl::Image image(256, 1);
+    for (int i = 0; i < 256; ++i)  // each channel its own order: a swap shows
+        image.at(i, 0) = {static_cast<std::uint8_t>(i),
+                          static_cast<std::uint8_t>((i * 7 + 3) % 256),
+                          static_cast<std::uint8_t>(255 - i), 255};
+    const textures::MipChain chain(image);
+    const shading::SrgbByteTables& tables = shading::srgb_byte_tables();
+    const textures::TexelEncoding& srgb = shading::srgb_texels();
+    const auto level_at = [&](int byte) {  // the linear width of the output level of `byte`
+        const double below = byte > 0 ? tables.steps[static_cast<std::size_t>(byte - 1)] : 0.0;
+        const double above = byte < 255 ? tables.steps[static_cast<std::size_t>(byte)] : 1.0;
+        return above - below;
+    };
+    std::vector<std::int32_t> index(256);
+    for (int i = 0; i < 256; ++i) index[static_cast<std::size_t>(i)] = i;  // row 0 of level 0
+    for (const bool one_word : {false, true}) {
+        const fast::PackedTexture packed(chain, false, &srgb, one_word);
+        ASSERT_EQ(packed.one_word, one_word);
+        for (std::int64_t target : fast::simd_targets()) {
+            hwy::SetSupportedTargetsForTest(target);
+            std::vector<float> rgb(3 * 256);
+            fast::decode_texels(packed, index.data(), index.size(), rgb.data());
+            for (int i = 0; i < 256; ++i)
+                for (int c = 0; c < 3; ++c) {
+                    const rl::Rgba texel = image.at(i, 0);
+                    const int byte = c == 0 ? texel.r : c == 1 ? texel.g : texel.b;
+                    const double off = std::abs(rgb[static_cast<std::size_t>(3 * i + c)] -
+                                                srgb.value[static_cast<std::size_t>(byte)]);
+                    ASSERT_LE(off / level_at(byte), one_word ? 0.2 : 0.03)
+                        << "byte " << byte << " of channel " << c << (one_word ? ", one word" : "")
+                        << " on " << hwy::TargetName(target);
+                }
+        }
+        hwy::SetSupportedTargetsForTest(0);
+    }
 }
 
 TEST(Options, RefusedWithTheReason) {
