@@ -47,6 +47,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
                              byte, the specular map's value; a pixel's gathers before and after
   12_srgb_entry.svg          lesson 06's sRGB search as two dependent gathers, or one gather of a
                              32-bit entry (the slice's first byte, its step as a 24-bit fraction)
+  12_albedo_word.svg         the decoded albedo's texel in one 32-bit word (square roots in 11, 11
+                             and 10 bits), and each layout's error per byte in output levels
   12_shadow_lookup.svg       one vector's eight pixels looked up in the shadow map: eight points,
                              each with its own 2x2 texels, scattered over the map
   13_frame_path.svg          one frame of the viewer, from the keyboard to the window
@@ -1235,6 +1237,57 @@ def srgb_entry(out):
     save(figure, out, "12_srgb_entry.svg")
 
 
+def albedo_word(out):
+    # Left: the two words a decoded albedo texel took, and the one it takes.
+    # Right: how far each layout's decoded value lies from lesson 06's, per
+    # byte, in output levels (the linear width of that byte's sRGB step).
+    figure, (left, right) = plt.subplots(1, 2, figsize=(8.8, 3.5),
+                                         gridspec_kw={"width_ratios": [1, 1.15]})
+    rows = [(2.3, "two words", [(0, 16, "R: 16 bits"), (16, 32, "G: 16 bits")], SOFT),
+            (1.55, "", [(0, 16, "B: 16 bits"), (16, 32, "(unused)")], "#eeeeee"),
+            (0.3, "one word", [(0, 11, "sqrt R: 11"), (11, 22, "sqrt G: 11"), (22, 32, "sqrt B: 10")], "#fff4c8")]
+    for y, name, cells, colour in rows:
+        left.text(-1.0, y + 0.3, name, ha="right", va="center", fontsize=8)
+        for lo, hi, text in cells:
+            left.add_patch(Rectangle((lo, y), hi - lo, 0.6, fc=colour if text != "(unused)" else "#eeeeee",
+                                     ec=INK, lw=0.8))
+            left.text((lo + hi) / 2, y + 0.3, text, ha="center", va="center", fontsize=7.5)
+    left.text(16, -0.25, "bits 0 to 31 of a 32-bit word; decoded: (bits / 2047)^2, blue / 1023", ha="center",
+              fontsize=7, color=LINE)
+    left.set_xlim(-9, 33)
+    left.set_ylim(-0.5, 3.2)
+    left.axis("off")
+    left.set_title("a decoded albedo texel, as the gathers load it", fontsize=9)
+
+    values = [srgb_to_linear(i / 255) for i in range(256)]
+    steps = [srgb_to_linear((k + 0.5) / 255) for k in range(255)]
+    widths = [(steps[i] if i < 255 else 1.0) - (steps[i - 1] if i > 0 else 0.0) for i in range(256)]
+
+    def levels_off(decode):
+        return [abs(decode(v) - v) / w for v, w in zip(values, widths)]
+
+    layouts = [("16 bits, linear (two words)", lambda v: round(v * 65535) / 65535, "#999999", "-"),
+               ("11 bits, linear", lambda v: round(v * 2047) / 2047, ACCENT, ":"),
+               ("11 bits, square root", lambda v: (round(math.sqrt(v) * 2047) / 2047) ** 2, LINE, "-"),
+               ("10 bits, square root (blue)", lambda v: (round(math.sqrt(v) * 1023) / 1023) ** 2, LINE, "--")]
+    for name, decode, colour, style in layouts:  # the worst of each 8 bytes
+        off = levels_off(decode)
+        worst = [max(off[i:i + 8]) for i in range(0, 256, 8)]
+        right.step(range(0, 256, 8), worst, where="post", color=colour, ls=style, lw=1.2, label=name)
+    right.set_yscale("log")
+    right.set_ylim(1e-5, 3)
+    right.axhline(0.5, color="0.5", lw=0.6)
+    right.text(250, 0.6, "half a level", ha="right", fontsize=7, color="0.4")
+    right.set_xlabel("texel byte (sRGB)", fontsize=8)
+    right.set_ylabel("worst error of 8 bytes (output levels)", fontsize=8)
+    right.tick_params(labelsize=7)
+    right.legend(fontsize=6.5, loc="lower right")
+    right.set_title("how far each layout decodes from lesson 06's value", fontsize=9)
+    figure.suptitle("The albedo in one word: square roots, so that the bits go where the levels are narrow",
+                    fontsize=10)
+    save(figure, out, "12_albedo_word.svg")
+
+
 def shadow_lookup(out):
     # A vector of 8 lanes: pixels of a triangle on the floor, from the lane
     # queue. Each lands at its own point of the shadow map, along a diagonal
@@ -1776,7 +1829,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, fragment_queue, block_rows, texel_words, srgb_entry, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, fragment_queue, block_rows, texel_words, srgb_entry, albedo_word, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 

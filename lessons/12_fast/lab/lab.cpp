@@ -331,7 +331,8 @@ int main(int argc, char** argv) {
     const rl::lab::Options options = rl::lab::init(
         argc, argv,
         "Lesson 12's lab: the fast path, technique by technique, against lesson 07 and Mesa's "
-        "llvmpipe. Writes 12_steps.csv, 12_sizes.csv, 12_triangles.csv and 12_stages.csv.");
+        "llvmpipe. Writes 12_steps.csv, 12_sizes.csv, 12_triangles.csv, 12_pairs.csv and "
+        "12_stages.csv.");
     return rl::guarded_main("12_fast_lab", [&] {
         const bool peer = peer_available(one_thread_run ? 1 : kThreads);
         std::vector<std::string> warnings;
