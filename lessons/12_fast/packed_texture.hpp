@@ -33,7 +33,7 @@ struct PackedTexture {
     std::vector<std::uint32_t> texels;  // level 0, then 1, ...; rows bottom first
     bool decoded = false;               // texels hold red | green << 16, blue_words blue
     bool one_word = false;  // decoded: texels hold sqrt'd red | green << 11 | blue << 22
-    std::vector<std::uint32_t> blue_words;
+    std::vector<std::uint32_t> blue_words;  // decoded in two words only; empty otherwise
     // Per level (padded to kMaxLevels with the last level, so that a gather
     // with a clamped index never reads past the table):
     std::int32_t level_offset[kMaxLevels], level_width[kMaxLevels], level_height[kMaxLevels],

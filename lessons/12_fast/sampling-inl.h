@@ -81,7 +81,7 @@ HWY_INLINE VU gather_words(const std::vector<std::uint32_t>& words, VI index) {
 }
 HWY_INLINE Fetched fetch(const PackedTexture& t, VI index, int channels) {
     Fetched f{gather_words(t.texels, index), hn::Zero(DU())};
-    if (t.decoded && !t.one_word && channels > 2) f.blue = gather_words(t.blue_words, index);
+    if (!t.blue_words.empty() && channels > 2) f.blue = gather_words(t.blue_words, index);
     return f;
 }
 // The texels at index and index + 1 of every lane: a row's two texels of a
@@ -112,7 +112,7 @@ HWY_INLINE void fetch_pairs(const PackedTexture& t, VI index, int channels, Fetc
                             Fetched& right) {
     gather_pairs(t.texels, index, left.word, right.word);
     left.blue = right.blue = hn::Zero(DU());
-    if (t.decoded && !t.one_word && channels > 2)
+    if (!t.blue_words.empty() && channels > 2)
         gather_pairs(t.blue_words, index, left.blue, right.blue);
 }
 HWY_INLINE VF channel(DF df, const PackedTexture& t, const Fetched& f, int c) {

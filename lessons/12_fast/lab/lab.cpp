@@ -213,8 +213,8 @@ struct Pair {
     int frames;
     std::string name;  // the benchmark's
     // The run's results:
-    std::vector<double> ms_off, ms_on, ratio;  // per pair: on / off
-    int levels_apart = 0;                      // the last pair's two images
+    std::vector<double> ms_off{}, ms_on{}, ratio{};  // per pair: on / off
+    int levels_apart = 0;                            // the last pair's two images
 };
 
 void time_pair(benchmark::State& state, Pair* p) {
@@ -470,16 +470,13 @@ int main(int argc, char** argv) {
                 const Scene& s = scenes[static_cast<std::size_t>(k)];
                 fast::FastOptions off;
                 turn_off(off);
-                pairs.push_back(std::make_unique<Pair>(Pair{&s,
-                                                            step_size,
-                                                            technique,
-                                                            off,
-                                                            options.quick ? 4 : 200,
-                                                            "pairs/" + s.name + "/" + technique,
-                                                            {},
-                                                            {},
-                                                            {},
-                                                            0}));
+                pairs.push_back(
+                    std::make_unique<Pair>(Pair{.scene = &s,
+                                                .size = step_size,
+                                                .technique = technique,
+                                                .off = off,
+                                                .frames = options.quick ? 4 : 200,
+                                                .name = "pairs/" + s.name + "/" + technique}));
             }
         if (!one_thread_run)
             for (auto& p : pairs)
