@@ -106,11 +106,15 @@ struct Cell {
     std::int64_t simd = 0;        // a Highway target to run with (0: the best)
     std::string name;             // the benchmark's
     int peer_threads = kThreads;  // for "llvmpipe" and "llvmpipe plain"
+    // For "fast": models other than the scene's (ours at the plain peer's
+    // work: the scene's without their specular maps).
+    const std::vector<MappedModel>* models = nullptr;
 };
 
 void time_fast(benchmark::State& state, const Cell* c) {
     hwy::SetSupportedTargetsForTest(c->simd);
-    fast::Renderer renderer(c->scene->models, c->size, c->size, c->options);
+    fast::Renderer renderer(c->models ? *c->models : c->scene->models, c->size, c->size,
+                            c->options);
     // A first frame, untimed, as llvmpipe's (which compiles its shaders):
     // it grows the buffers, and a cell of one iteration a run (a million
     // triangles) would otherwise time only that cold frame.
@@ -394,6 +398,19 @@ int main(int argc, char** argv) {
             one_thread_cells.push_back(c);
             size_cells.push_back(c);
         };
+        // Ours at the plain peer's work (and the sRGB encoding on the way
+        // out, which the plain peer leaves out): one light, Phong, the colour
+        // map, no normal or specular map.
+        fast::FastOptions plain_work;
+        plain_work.render.normal_map = normal_mapping::NormalMap::none;
+        plain_work.render.specular = shading::Specular::phong;
+        plain_work.render.lighting.lights.resize(1);
+        std::vector<std::vector<MappedModel>> without_specular_maps;
+        without_specular_maps.reserve(scenes.size());
+        for (const Scene& s : scenes) {
+            without_specular_maps.push_back(s.models);
+            for (MappedModel& m : without_specular_maps.back()) m.maps.specular.reset();
+        }
         for (const Scene& s : scenes)
             for (int size : sizes) {
                 size_cells.push_back(add(s, size, "fast", {}, 0, "fast, 2 threads"));
@@ -401,6 +418,11 @@ int main(int argc, char** argv) {
                     size_cells.push_back(add(s, size, "llvmpipe", {}, 0, "llvmpipe, 2 threads"));
                     size_cells.push_back(
                         add(s, size, "llvmpipe plain", {}, 0, "llvmpipe plain, 2 threads"));
+                    Cell* plain = add(s, size, "fast", plain_work, 0,
+                                      "fast at the plain peer's work, 2 threads");
+                    plain->models =
+                        &without_specular_maps[static_cast<std::size_t>(&s - &scenes[0])];
+                    size_cells.push_back(plain);
                 }
                 on_one_thread(add(s, size, "fast", one_thread, 0, "fast, 1 thread"));
                 if (peer) {
@@ -557,12 +579,13 @@ int main(int argc, char** argv) {
             for (const Cell* c : size_cells) {
                 const std::pair<const Scene*, int> key{c->scene, c->size};
                 const bool ours = c->renderer == "fast";
+                const bool same_work = ours && !c->models;  // (not at the plain peer's work)
                 sizes_table.add_row({c->scene->name, static_cast<long long>(c->size),
                                      c->name.substr(c->name.rfind('/') + 1), ms(c), ms_min(c),
                                      ms_max(c), ms(c) / floor_ms.at(key),
-                                     ours && peer ? ms(c) / peer_ms.at(key_of(c)) : NAN,
+                                     same_work && peer ? ms(c) / peer_ms.at(key_of(c)) : NAN,
                                      ours && peer ? ms(c) / plain_ms.at(key_of(c)) : NAN,
-                                     ours && peer ? differing.at(key) : NAN});
+                                     same_work && peer ? differing.at(key) : NAN});
             }
             sizes_table.write_csv(options.out_dir / "12_sizes.csv");
             written.push_back("12_sizes.csv");
@@ -620,7 +643,7 @@ int main(int argc, char** argv) {
         }
         rl::ResultsTable stages_table({"scene", "size", "stage", "ms_per_frame"});
         for (const Scene& s : scenes)
-            for (int size : std::set<int>{step_size, sizes.back()}) {  // one size if quick
+            for (int size : std::set<int>{sizes.front(), step_size, sizes.back()}) {
                 fast::Renderer renderer(s.models, size, size, {});
                 renderer.render(s.camera);
                 fast::StageTimes sum;
