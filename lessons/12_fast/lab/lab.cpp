@@ -407,10 +407,11 @@ int main(int argc, char** argv) {
         plain_work.render.lighting.lights.resize(1);
         std::vector<std::vector<MappedModel>> without_specular_maps;
         without_specular_maps.reserve(scenes.size());
-        for (const Scene& s : scenes) {
-            without_specular_maps.push_back(s.models);
-            for (MappedModel& m : without_specular_maps.back()) m.maps.specular.reset();
-        }
+        if (peer)  // (its row stands beside the plain peer's)
+            for (const Scene& s : scenes) {
+                without_specular_maps.push_back(s.models);
+                for (MappedModel& m : without_specular_maps.back()) m.maps.specular.reset();
+            }
         for (const Scene& s : scenes)
             for (int size : sizes) {
                 size_cells.push_back(add(s, size, "fast", {}, 0, "fast, 2 threads"));
