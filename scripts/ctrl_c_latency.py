@@ -33,7 +33,10 @@ CALLS = [("rasterlab.lesson12.render(frames=1000)", 0.5),
          ("rasterlab.lesson08.render(width=4096, height=4096)", 0.5),
          ("rasterlab.lesson07.render(width=16384, height=16384)", 5.0),
          ("rasterlab.lesson08.render(width=16384, height=16384)", 5.0),
-         ("rasterlab.lesson04.draw(width=16384, height=16384)", 6.0)]
+         ("rasterlab.lesson04.draw(width=16384, height=16384)", 6.0),
+         ("rasterlab.lesson09.render(map_size=2048, width=64, height=64)", 2.0),
+         ("rasterlab.lesson10.render(['obj/torus.obj', 'obj/globe.obj', 'obj/rock.obj'] * 2, "
+          "ao='baked', samples=1024, width=64, height=64)", 2.0)]
 
 
 def latency(module_dir, expression, after):

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <memory>
 #include <new>
+#include <optional>
 #include <string_view>
 
 namespace rl {
@@ -141,14 +142,61 @@ bool is_radiance_hdr(std::span<const std::uint8_t> bytes) {
     return starts_with("#?RADIANCE\n") || starts_with("#?RGBE\n");
 }
 
-// Where an .hdr's pixels begin: after the header's lines, the empty line
-// that ends them and the resolution line ("-Y 512 +X 1024"); npos if absent.
-std::size_t hdr_pixels_start(std::span<const std::uint8_t> bytes) {
+// What an .hdr's header says: the image's size and where its pixels begin.
+struct HdrHeader {
+    int width = 0, height = 0;
+    std::size_t pixels = 0;  // the first byte after the resolution line
+};
+
+// A resolution line's number: decimal digits only, at most INT_MAX. stb_image
+// reads it with strtol cast to int, so 4294967297 became 1 and a file loaded
+// as another size without a word; here such a number is a corrupt header.
+std::optional<int> resolution_number(std::string_view& line) {
+    std::size_t digits = 0;
+    long long value = 0;
+    while (digits < line.size() && line[digits] >= '0' && line[digits] <= '9') {
+        value = value * 10 + (line[digits] - '0');
+        if (value > INT_MAX) return std::nullopt;
+        ++digits;
+    }
+    if (digits == 0) return std::nullopt;
+    line.remove_prefix(digits);
+    return static_cast<int>(value);
+}
+
+// Reads the header of an .hdr: its lines up to the empty one that ends them,
+// then the resolution line, "-Y <height> +X <width>" (rows top first, the one
+// orientation stb_image reads). Throws FileError naming what is wrong.
+HdrHeader read_hdr_header(const std::filesystem::path& path, std::span<const std::uint8_t> bytes) {
     const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     const std::size_t blank = text.find("\n\n");
-    if (blank == std::string_view::npos) return blank;
-    const std::size_t end = text.find('\n', blank + 2);
-    return end == std::string_view::npos ? end : end + 1;
+    const std::size_t end = blank == std::string_view::npos ? blank : text.find('\n', blank + 2);
+    if (end == std::string_view::npos) throw FileError(path, "no resolution line after the header");
+    const std::string_view whole = text.substr(blank + 2, end - blank - 2);
+    const auto corrupt = [&](const std::string& why) {
+        return FileError(path, "corrupt header: the resolution line '" +
+                                   std::string(whole.substr(0, 40)) + "' " + why);
+    };
+    std::string_view line = whole;
+    const auto skip = [&](std::string_view word) {
+        if (!line.starts_with(word)) return false;
+        line.remove_prefix(word.size());
+        return true;
+    };
+    const auto spaces = [&] {
+        while (!line.empty() && (line.front() == ' ' || line.front() == '\r'))
+            line.remove_prefix(1);
+    };
+    if (!skip("-Y ")) throw corrupt("is not '-Y <height> +X <width>'");
+    const std::optional<int> height = resolution_number(line);
+    spaces();
+    if (!skip("+X ")) throw corrupt("is not '-Y <height> +X <width>'");
+    const std::optional<int> width = resolution_number(line);
+    spaces();
+    if (!height || !width || !line.empty())
+        throw corrupt("does not hold two whole numbers of texels from 0 to " +
+                      std::to_string(INT_MAX));
+    return {*width, *height, end + 1};
 }
 
 // Why the pixels from `at` on cannot be read as a width x height image, or
@@ -228,26 +276,31 @@ Image load_image(const std::filesystem::path& path) {
     }
 }
 
-HdrImage load_hdr_image(const std::filesystem::path& path) {
+HdrImage load_hdr_image(const std::filesystem::path& path, const ImageCap& cap) {
     try {
         const std::vector<std::uint8_t> bytes = read_file(path);
         if (bytes.size() > static_cast<std::size_t>(INT_MAX))
             throw FileError(path, "file too large");
         if (!is_radiance_hdr(bytes))
             throw FileError(path, "not a Radiance .hdr file (it must start with #?RADIANCE)");
+        const HdrHeader header = read_hdr_header(path, bytes);
         int width = 0, height = 0, channels = 0;
         if (!stbi_info_from_memory(bytes.data(), static_cast<int>(bytes.size()), &width, &height,
                                    &channels))
             throw FileError(path, std::string("not a readable image: ") + stbi_failure_reason());
+        if (width != header.width || height != header.height)  // the decoder reads another size
+            throw FileError(path, "corrupt header: its size is read two ways");
         try {
             check_dimensions(width, height);
         } catch (const std::invalid_argument& e) {
             throw FileError(path, e.what());
         }
-        const std::size_t start = hdr_pixels_start(bytes);
-        if (start == std::string::npos)
-            throw FileError(path, "no resolution line after the header");
-        if (const std::string problem = hdr_pixels_problem(bytes, start, width, height);
+        if (width > cap.width || height > cap.height)
+            throw FileError(path, "a " + std::to_string(width) + "x" + std::to_string(height) +
+                                      " image, past " + cap.name + " of " +
+                                      std::to_string(cap.width) + "x" + std::to_string(cap.height) +
+                                      " texels (refused before " + "decoding)");
+        if (const std::string problem = hdr_pixels_problem(bytes, header.pixels, width, height);
             !problem.empty())
             throw FileError(path, problem);
         std::unique_ptr<float, void (*)(void*)> data(

@@ -35,6 +35,14 @@ rl::HdrImage cleaned(rl::HdrImage image, const std::string& path,
     return image;
 }
 
+// The largest .hdr file a program reads (see make_environment).
+const rl::ImageCap& file_cap() {
+    static const rl::ImageCap cap{2 * kMaxMapSize, kMaxMapSize,
+                                  "lesson 09's cap on a lat-long map (at most " +
+                                      std::to_string(kMaxMapSize) + " texels high, as --map-size)"};
+    return cap;
+}
+
 }  // namespace
 
 double Environment::texel_radians() const {
@@ -62,7 +70,8 @@ Environment make_environment(const EnvironmentOptions& options,
             return Environment(cube_map(*which, options.size, samples), options.filter);
         return Environment(latlong_map(*which, options.size, samples), options.filter);
     }
-    LatLongMap file(cleaned(rl::load_hdr_image(options.source), options.source, warnings));
+    LatLongMap file(
+        cleaned(rl::load_hdr_image(options.source, file_cap()), options.source, warnings));
     if (options.layout == Layout::latlong) return Environment(std::move(file), options.filter);
     return Environment(
         cube_map(

@@ -81,9 +81,11 @@ inline constexpr int kMaxMapSize = 2048;
 inline constexpr float kMaxRadiance = 1e9f;
 
 // Builds the environment the options ask for. A .hdr file is read as a
-// lat-long image; as a cube map each face texel reads it bilinearly. Its
-// texels must be 0 to kMaxRadiance: others (a broken file) are set to 0
-// with a warning naming how many. Throws std::invalid_argument for a size
+// lat-long image of at most 2 kMaxMapSize x kMaxMapSize texels (4096 x
+// 2048: 128 MiB of floats), its header read first so that a larger one is
+// refused before a texel is decoded; as a cube map each face texel reads it
+// bilinearly. Its texels must be 0 to kMaxRadiance: others (a broken
+// file) are set to 0 with a warning naming how many. Throws std::invalid_argument for a size
 // outside 1..kMaxMapSize, rl::FileError for a file that cannot be read.
 Environment make_environment(const EnvironmentOptions& options, std::vector<std::string>& warnings);
 

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "rasterlab/checkpoint.hpp"
 #include "sphere_sampling.hpp"
 
 namespace environment {
@@ -57,7 +58,8 @@ ShLight project_sh(const CubeMap& cube, int order) {
     const int count = order * order, n = cube.size();
     for (Face f : kFaces) {
         const rl::HdrImage& image = cube.face(f).level(0);
-        for (int j = 0; j < n; ++j)
+        for (int j = 0; j < n; ++j) {
+            rl::checkpoint();  // a host's Ctrl-C, between rows
             for (int i = 0; i < n; ++i) {
                 const rl::dvec3 d = rl::normalize(face_direction(f, (i + 0.5) / n, (j + 0.5) / n));
                 const rl::vec4 t = image.get(i, j);
@@ -65,6 +67,7 @@ ShLight project_sh(const CubeMap& cube, int order) {
                 const std::array<double, 9> y = sh_basis(d);
                 for (int k = 0; k < count; ++k) sh.coefficients[k] += light * y[k];
             }
+        }
     }
     return sh;
 }
@@ -108,7 +111,8 @@ CubeMap irradiance_map(const CubeMap& source, int size) {
     std::array<rl::HdrImage, 6> faces;
     for (Face f : kFaces) {
         rl::HdrImage image(size, size);
-        for (int j = 0; j < size; ++j)
+        for (int j = 0; j < size; ++j) {
+            rl::checkpoint();  // a host's Ctrl-C, between rows
             for (int i = 0; i < size; ++i) {
                 const rl::dvec3 normal =
                     rl::normalize(face_direction(f, (i + 0.5) / size, (j + 0.5) / size));
@@ -121,6 +125,7 @@ CubeMap irradiance_map(const CubeMap& source, int size) {
                     i, j,
                     {static_cast<float>(e.x), static_cast<float>(e.y), static_cast<float>(e.z), 1});
             }
+        }
         faces[static_cast<std::size_t>(f)] = std::move(image);
     }
     return CubeMap(std::move(faces));

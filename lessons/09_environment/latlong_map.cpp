@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "rasterlab/checkpoint.hpp"
+
 namespace environment {
 
 namespace {
@@ -89,7 +91,8 @@ LatLongMap latlong_map(const std::function<rl::dvec3(rl::dvec3)>& radiance, int 
                                     " samples a side (1 to 64)");
     const int width = 2 * height;
     rl::HdrImage image(width, height);
-    for (int j = 0; j < height; ++j)
+    for (int j = 0; j < height; ++j) {
+        rl::checkpoint();  // a host's Ctrl-C, between rows
         for (int i = 0; i < width; ++i) {
             rl::dvec3 sum{0, 0, 0};
             for (int b = 0; b < samples; ++b)
@@ -99,6 +102,7 @@ LatLongMap latlong_map(const std::function<rl::dvec3(rl::dvec3)>& radiance, int 
             const rl::vec3 mean = rl::cast<float>(sum / static_cast<double>(samples * samples));
             image.set(i, j, {mean.x, mean.y, mean.z, 1});
         }
+    }
     return LatLongMap(std::move(image));
 }
 

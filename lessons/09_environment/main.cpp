@@ -35,10 +35,11 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     rl::add_method_option(app, "--map", env_options.layout, environment::kLayouts,
                           "How the environment is stored");
-    app.add_option("--map-size", env_options.size,
-                   "A cube face's side, or a lat-long map's height, in texels (1 to " +
-                       std::to_string(environment::kMaxMapSize) + ")")
-        ->capture_default_str();
+    CLI::Option* map_size =
+        app.add_option("--map-size", env_options.size,
+                       "A cube face's side, or a lat-long map's height, in texels (1 to " +
+                           std::to_string(environment::kMaxMapSize) + ")")
+            ->capture_default_str();
     rl::add_method_option(app, "--filter", env_options.filter, environment::kMapFilters,
                           "How the map is read between texels");
     std::vector<float> metal;
@@ -47,46 +48,56 @@ int main(int argc, char** argv) {
         rl::add_method_option(app, "--material", material, environment::kMaterials,
                               "What every model is made of")
             ->default_str("the first model mirror, the others rough-metal");
-    app.add_option("--roughness", options.roughness,
-                   "How rough rough-metal and plastic are: 0 (a mirror) to 1")
-        ->capture_default_str()
-        ->check(rl::finite_number(0, 1));
-    app.add_option("--metal", metal,
-                   "The rough metal's head-on reflectance, R G B from 0 to 1 (gold: 1 0.71 0.29; "
-                   "white, 1 1 1, for the white furnace)")
-        ->expected(3)
-        ->check(rl::finite_number(0, 1));
-    rl::add_method_option(app, "--glossy", options.glossy, environment::kGlossies,
-                          "How rough-metal and plastic gather the light they reflect");
-    rl::add_method_option(app, "--lookup", options.lookup, environment::kLookups,
-                          "Where the split sum reads its blurred maps: along the mirror direction, "
-                          "or leaning towards the normal as a rough lobe does");
+    CLI::Option* roughness =
+        app.add_option("--roughness", options.roughness,
+                       "How rough rough-metal and plastic are: 0 (a mirror) to 1")
+            ->capture_default_str()
+            ->check(rl::finite_number(0, 1));
+    CLI::Option* metal_option =
+        app.add_option(
+               "--metal", metal,
+               "The rough metal's head-on reflectance, R G B from 0 to 1 (gold: 1 0.71 0.29; "
+               "white, 1 1 1, for the white furnace)")
+            ->expected(3)
+            ->check(rl::finite_number(0, 1));
+    CLI::Option* glossy =
+        rl::add_method_option(app, "--glossy", options.glossy, environment::kGlossies,
+                              "How rough-metal and plastic gather the light they reflect");
+    CLI::Option* lookup = rl::add_method_option(
+        app, "--lookup", options.lookup, environment::kLookups,
+        "Where the split sum reads its blurred maps: along the mirror direction, "
+        "or leaning towards the normal as a rough lobe does");
     bool single_scatter = false;
-    app.add_flag("--single-scatter", single_scatter,
-                 "Leave out the light that bounces between a rough surface's facets (the "
-                 "microfacet BRDF's lost energy)");
-    app.add_option("--glossy-levels", options.prefilter.levels,
-                   "Roughness steps of the split sum's blurred maps (2 to " +
-                       std::to_string(environment::kMaxGlossyLevels) + ")")
-        ->capture_default_str()
-        ->check(CLI::Range(2, environment::kMaxGlossyLevels));
-    app.add_option("--glossy-size", options.prefilter.size,
-                   "The largest blurred map's face, in texels (8 to " +
-                       std::to_string(environment::kMaxGlossySize) + ")")
-        ->capture_default_str()
-        ->check(CLI::Range(8, environment::kMaxGlossySize));
-    app.add_option("--glossy-samples", options.prefilter.samples,
-                   "GGX rays per texel of the blurred maps (1 to " +
-                       std::to_string(environment::kMaxGlossySamples) + ")")
-        ->capture_default_str()
-        ->check(CLI::Range(1, environment::kMaxGlossySamples));
-    rl::add_method_option(app, "--irradiance", options.irradiance, environment::kIrradiances,
-                          "How a diffuse surface finds the light arriving from its hemisphere");
-    app.add_option("--samples", options.samples,
-                   "Monte Carlo's rays per pixel (--irradiance or --glossy monte-carlo; 1 to " +
-                       std::to_string(environment::kMaxIrradianceSamples) + ")")
-        ->capture_default_str()
-        ->check(CLI::Range(1, environment::kMaxIrradianceSamples));
+    CLI::Option* single =
+        app.add_flag("--single-scatter", single_scatter,
+                     "Leave out the light that bounces between a rough surface's facets (the "
+                     "microfacet BRDF's lost energy)");
+    CLI::Option* glossy_levels =
+        app.add_option("--glossy-levels", options.prefilter.levels,
+                       "Roughness steps of the split sum's blurred maps (2 to " +
+                           std::to_string(environment::kMaxGlossyLevels) + ")")
+            ->capture_default_str()
+            ->check(CLI::Range(2, environment::kMaxGlossyLevels));
+    CLI::Option* glossy_size = app.add_option("--glossy-size", options.prefilter.size,
+                                              "The largest blurred map's face, in texels (8 to " +
+                                                  std::to_string(environment::kMaxGlossySize) + ")")
+                                   ->capture_default_str()
+                                   ->check(CLI::Range(8, environment::kMaxGlossySize));
+    CLI::Option* glossy_samples =
+        app.add_option("--glossy-samples", options.prefilter.samples,
+                       "GGX rays per texel of the blurred maps (1 to " +
+                           std::to_string(environment::kMaxGlossySamples) + ")")
+            ->capture_default_str()
+            ->check(CLI::Range(1, environment::kMaxGlossySamples));
+    CLI::Option* irradiance =
+        rl::add_method_option(app, "--irradiance", options.irradiance, environment::kIrradiances,
+                              "How a diffuse surface finds the light arriving from its hemisphere");
+    CLI::Option* samples =
+        app.add_option("--samples", options.samples,
+                       "Monte Carlo's rays per pixel (--irradiance or --glossy monte-carlo; 1 to " +
+                           std::to_string(environment::kMaxIrradianceSamples) + ")")
+            ->capture_default_str()
+            ->check(CLI::Range(1, environment::kMaxIrradianceSamples));
     rl::add_method_option(app, "--tone-map", exposure.curve, environment::kToneMaps,
                           "How light above 1 is brought into the image");
     app.add_option("--exposure", exposure.stops, "Exposure in stops: the light times 2^stops")
@@ -120,6 +131,19 @@ int main(int argc, char** argv) {
         // The models first: a model the loader refuses costs no map.
         const auto [models, camera] =
             environment::load_scene(view, tangents, width, height, warnings);
+        // Options the materials would ignore are refused, not ignored.
+        environment::refuse_unused_options(options, env_options, models.size(),
+                                           {.roughness = roughness->count() > 0,
+                                            .metal = metal_option->count() > 0,
+                                            .glossy = glossy->count() > 0,
+                                            .lookup = lookup->count() > 0,
+                                            .single_scatter = single->count() > 0,
+                                            .glossy_levels = glossy_levels->count() > 0,
+                                            .glossy_size = glossy_size->count() > 0,
+                                            .glossy_samples = glossy_samples->count() > 0,
+                                            .irradiance = irradiance->count() > 0,
+                                            .samples = samples->count() > 0,
+                                            .map_size = map_size->count() > 0});
         const auto start = std::chrono::steady_clock::now();
         const environment::Environment env = environment::make_environment(env_options, warnings);
         const environment::PreparedLight light(env, options, models.size());

@@ -79,6 +79,46 @@ SurfaceMaterial material_of(const RenderOptions& options, std::size_t index) {
             .samples = options.samples};
 }
 
+void refuse_unused_options(const RenderOptions& options, const EnvironmentOptions& environment,
+                           std::size_t model_count, const GivenOptions& given) {
+    bool glossy = false, metal = false, diffuse = false;
+    for (std::size_t i = 0; i < model_count; ++i) {
+        const Material m = material_of(options, i).material;
+        glossy |= is_glossy(m);
+        metal |= m == Material::rough_metal;
+        diffuse |= is_glossy(m) || m == Material::diffuse;
+    }
+    const bool split_sum = glossy && options.glossy == Glossy::split_sum;
+    const bool monte_carlo = (glossy && options.glossy == Glossy::monte_carlo) ||
+                             (diffuse && options.irradiance == Irradiance::monte_carlo);
+    const auto refuse = [](bool unused, const char* option, const std::string& why) {
+        if (unused) throw std::invalid_argument(std::string(option) + ": " + why);
+    };
+    const std::string materials = options.material
+                                      ? std::string("--material ") + name(*options.material)
+                                      : std::string("a mirror as the only model");
+    const std::string no_glossy = "no model is rough-metal or plastic (" + materials + ")";
+    refuse(given.roughness && !glossy, "--roughness", no_glossy);
+    refuse(given.glossy && !glossy, "--glossy", no_glossy);
+    refuse(given.single_scatter && !glossy, "--single-scatter", no_glossy);
+    refuse(given.metal && !metal, "--metal", "no model is rough-metal (" + materials + ")");
+    refuse(given.irradiance && !diffuse, "--irradiance",
+           "no model is diffuse, rough-metal or plastic (" + materials + ")");
+    const std::string no_split_sum =
+        glossy ? "only the split sum reads blurred maps (--glossy monte-carlo gathers its own rays)"
+               : no_glossy;
+    refuse(given.lookup && !split_sum, "--lookup", no_split_sum);
+    refuse(given.glossy_levels && !split_sum, "--glossy-levels", no_split_sum);
+    refuse(given.glossy_size && !split_sum, "--glossy-size", no_split_sum);
+    refuse(given.glossy_samples && !split_sum, "--glossy-samples", no_split_sum);
+    refuse(given.samples && !monte_carlo, "--samples",
+           "no Monte Carlo rays are cast (only by --irradiance monte-carlo, or --glossy "
+           "monte-carlo on rough-metal or plastic)");
+    refuse(given.map_size && !rl::from_name(environment.source, kAnalytics) &&
+               environment.layout == Layout::latlong,
+           "--map-size", "an .hdr file as a lat-long map is used at its own size");
+}
+
 PreparedLight::PreparedLight(const Environment& environment, const RenderOptions& options,
                              std::size_t model_count)
     : environment_(&environment) {

@@ -57,6 +57,22 @@ struct RenderOptions {
 // Model `index`'s material under `options`.
 SurfaceMaterial material_of(const RenderOptions& options, std::size_t index);
 
+// The options a user set: on the command line, or (in Python) to a value
+// other than its default. Each must change the picture.
+struct GivenOptions {
+    bool roughness = false, metal = false, glossy = false, lookup = false, single_scatter = false,
+         glossy_levels = false, glossy_size = false, glossy_samples = false, irradiance = false,
+         samples = false, map_size = false;
+};
+
+// Throws std::invalid_argument naming the first given option that the
+// materials of `model_count` models (and the environment) would ignore, and
+// why: a roughness or a metal no model's material has, the split sum's
+// options under Monte Carlo, rays for no Monte Carlo, a map size for an .hdr
+// file read as the lat-long map it is.
+void refuse_unused_options(const RenderOptions& options, const EnvironmentOptions& environment,
+                           std::size_t model_count, const GivenOptions& given);
+
 // The rays from the eye through a width x height image: the camera's frame,
 // found once per frame. ray(x, y) is the unit world direction through the
 // point (x, y) of the image (pixel centres at i + 0.5): the inverse of what

@@ -25,23 +25,27 @@ int main(int argc, char** argv) {
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--ao", options.ao.method, occlusion::kAoMethods,
                           "How the occlusion is found");
-    app.add_option("--samples", options.ao.samples,
-                   "Depth-buffer reads a pixel (1 to " + std::to_string(occlusion::kMaxAoSamples) +
-                       "; horizon: 8 per slice; baked: rays a vertex)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, occlusion::kMaxAoSamples));
-    app.add_option("--radius", options.ao.radius,
-                   "How far an occluder may be, in world units (the floor is 3.4 wide)")
-        ->capture_default_str()
-        ->check(rl::finite_number(1e-4, 1e4));
-    app.add_option("--blur", options.ao.blur,
-                   "The blur's half width in pixels, within one surface (0 to " +
-                       std::to_string(occlusion::kMaxBlurRadius) + "; 0: none)")
-        ->capture_default_str()
-        ->check(CLI::Range(0, occlusion::kMaxBlurRadius));
+    CLI::Option* samples = app.add_option("--samples", options.ao.samples,
+                                          "Depth-buffer reads a pixel (1 to " +
+                                              std::to_string(occlusion::kMaxAoSamples) +
+                                              "; horizon: 8 per slice; baked: rays a vertex)")
+                               ->capture_default_str()
+                               ->check(CLI::Range(1, occlusion::kMaxAoSamples));
+    CLI::Option* radius_option =
+        app.add_option("--radius", options.ao.radius,
+                       "How far an occluder may be, in world units (the floor is 3.4 wide)")
+            ->capture_default_str()
+            ->check(rl::finite_number(1e-4, 1e4));
+    CLI::Option* blur =
+        app.add_option("--blur", options.ao.blur,
+                       "The blur's half width in pixels, within one surface (0 to " +
+                           std::to_string(occlusion::kMaxBlurRadius) + "; 0: none)")
+            ->capture_default_str()
+            ->check(CLI::Range(0, occlusion::kMaxBlurRadius));
     bool no_rotation = false;
-    app.add_flag("--no-rotation", no_rotation,
-                 "The same kernel at every pixel, not turned by the 4x4 noise");
+    CLI::Option* no_rotation_flag =
+        app.add_flag("--no-rotation", no_rotation,
+                     "The same kernel at every pixel, not turned by the 4x4 noise");
     rl::add_method_option(
         app, "--show", show, occlusion::kShows,
         "Write the picture, the occlusion alone, the picture without it, or one of the "
@@ -63,6 +67,13 @@ int main(int argc, char** argv) {
         rl::check_image_output(output);
         options.ao.rotate = !no_rotation;
         occlusion::check(options.ao);
+        // Options the method (or the environment) would ignore are refused, not ignored.
+        occlusion::refuse_unused_options(options.ao, !environment_source.empty(),
+                                         {.samples = samples->count() > 0,
+                                          .radius = radius_option->count() > 0,
+                                          .blur = blur->count() > 0,
+                                          .no_rotation = no_rotation_flag->count() > 0,
+                                          .light = app.get_option("--light")->count() > 0});
         occlusion::check_frame_size(width, height);
         shadows::set_lights(options.shadow, view, false);
         std::vector<std::string> warnings;

@@ -21,6 +21,22 @@ void check_frame_size(int width, int height) {
             "hold about 80 bytes a pixel");
 }
 
+void refuse_unused_options(const AoOptions& ao, bool environment, const GivenOptions& given) {
+    const auto refuse = [](bool unused, const char* option, const std::string& why) {
+        if (unused) throw std::invalid_argument(std::string(option) + ": " + why);
+    };
+    const bool none = ao.method == AoMethod::none, baked = ao.method == AoMethod::baked;
+    const std::string no_occlusion = "--ao none finds no occlusion";
+    refuse(given.samples && none, "--samples", no_occlusion);
+    refuse(given.radius && none, "--radius", no_occlusion);
+    refuse(given.blur && (none || baked), "--blur",
+           none ? no_occlusion : "--ao baked is smooth per vertex, and not blurred");
+    refuse(given.no_rotation && (none || baked), "--no-rotation",
+           none ? no_occlusion : "--ao baked casts its rays per vertex, not by the screen's noise");
+    refuse(given.light && environment, "--light",
+           "the environment lights the scene, not lesson 08's lights");
+}
+
 Frame render(const std::vector<normal_mapping::MappedModel>& models,
              const perspective::Camera& camera, const SceneOptions& options, int width, int height,
              const BakedAo* baked) {

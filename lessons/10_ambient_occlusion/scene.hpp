@@ -91,6 +91,18 @@ inline constexpr long long kMaxFramePixels = 1LL << 24;
 // Throws std::invalid_argument naming the cap when width x height is past it.
 void check_frame_size(int width, int height);
 
+// The options a user set: on the command line, or (in Python) to a value
+// other than its default. Each must change the picture.
+struct GivenOptions {
+    bool samples = false, radius = false, blur = false, no_rotation = false, light = false;
+};
+
+// Throws std::invalid_argument naming the first given option that `ao`'s
+// method would ignore (none uses no sample, radius or blur; baked rays are
+// neither turned nor blurred), or a light direction when an environment
+// (`environment`) lights the scene instead.
+void refuse_unused_options(const AoOptions& ao, bool environment, const GivenOptions& given);
+
 // Both passes and the occlusion, for `camera` at width x height. The baked
 // method reads `baked` (bake_vertex_ao with the same radius), or bakes
 // here, within the frame, when given none.

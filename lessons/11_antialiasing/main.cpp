@@ -30,12 +30,14 @@ int main(int argc, char** argv) {
                        "Samples a pixel for ssaa and msaa: 2, 4, 8 or 16 (as the pattern has them)")
             ->capture_default_str()
             ->check(CLI::IsMember({1, 2, 4, 8, 16}));
-    rl::add_method_option(app, "--pattern", options.pattern, antialiasing::kPatterns,
-                          "Where a pixel's samples lie: an ordered grid (4, 16), a rotated grid "
-                          "(4) or Direct3D's standard patterns (2, 4, 8, 16)");
-    rl::add_method_option(app, "--resolve", options.resolve, antialiasing::kResolves,
-                          "How samples become a pixel: their mean (box), or a tent over the "
-                          "pixel and its neighbours");
+    CLI::Option* pattern = rl::add_method_option(
+        app, "--pattern", options.pattern, antialiasing::kPatterns,
+        "Where a pixel's samples lie: an ordered grid (4, 16), a rotated grid "
+        "(4) or Direct3D's standard patterns (2, 4, 8, 16)");
+    CLI::Option* resolve =
+        rl::add_method_option(app, "--resolve", options.resolve, antialiasing::kResolves,
+                              "How samples become a pixel: their mean (box), or a tent over the "
+                              "pixel and its neighbours");
     CLI::Option* shade_at =
         rl::add_method_option(app, "--shade-at", options.shade_at, antialiasing::kShadeAts,
                               "msaa: where the fragment stage runs in a pixel");
@@ -66,15 +68,10 @@ int main(int argc, char** argv) {
     return rl::guarded_main("11_antialiasing", [&] {
         rl::check_image_output(output);
         // Options the method would ignore are refused, not ignored.
-        if (antialiasing::samples_of(options) == 1 && samples->count() > 0 && options.samples != 1)
-            throw std::invalid_argument("--samples: --aa " +
-                                        std::string(antialiasing::name(options.method)) +
-                                        " takes one sample a pixel");
-        if (options.method != antialiasing::Method::msaa && shade_at->count() > 0)
-            throw std::invalid_argument("--shade-at: only --aa msaa shades once a pixel");
-        if (options.resolve_encoded && options.tone != antialiasing::ToneOrder::none)
-            throw std::invalid_argument(
-                "--resolve-encoded: the encoded resolve is shown without a tone map");
+        antialiasing::refuse_unused_options(options, {.samples = samples->count() > 0,
+                                                      .pattern = pattern->count() > 0,
+                                                      .resolve = resolve->count() > 0,
+                                                      .shade_at = shade_at->count() > 0});
         antialiasing::check(options);
         antialiasing::check_frame_size(width, height, antialiasing::samples_of(options));
         shadows::set_lights(shadow, view, false);

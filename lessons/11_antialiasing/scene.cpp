@@ -27,6 +27,27 @@ void check(const AaOptions& options) {
         sample_offsets(options.pattern, options.samples);  // throws, naming the counts it has
 }
 
+void refuse_unused_options(const AaOptions& options, const GivenOptions& given) {
+    const auto refuse = [](bool unused, const char* option, const std::string& why) {
+        if (unused) throw std::invalid_argument(std::string(option) + ": " + why);
+    };
+    const std::string method = std::string("--aa ") + name(options.method);
+    if (!one_sample(options.method))
+        refuse(options.samples == 1, "--samples",
+               method + " at one sample a pixel draws --aa none's picture");
+    const std::string one = method + " takes one sample a pixel";
+    const bool single = one_sample(options.method);
+    refuse(given.samples && single && options.samples != 1, "--samples", one);
+    refuse(given.pattern && single, "--pattern", one);
+    refuse(given.resolve && single, "--resolve", one + ": there is nothing to resolve");
+    refuse(options.resolve_encoded && single, "--resolve-encoded",
+           one + ": there is nothing to resolve");
+    refuse(given.shade_at && options.method != Method::msaa, "--shade-at",
+           "only --aa msaa shades once a pixel");
+    refuse(options.resolve_encoded && options.tone != ToneOrder::none, "--resolve-encoded",
+           "the encoded resolve is shown without a tone map");
+}
+
 void check_frame_size(int width, int height, int samples) {
     const long long total = static_cast<long long>(width) * height * samples;
     if (total > kMaxFrameSamples)

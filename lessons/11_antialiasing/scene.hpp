@@ -70,6 +70,19 @@ int samples_of(const AaOptions& options);
 // ignoring it: the program refuses the combination itself).
 void check(const AaOptions& options);
 
+// The options a user set: on the command line, or (in Python) to a value
+// other than its default. Each must change the picture.
+struct GivenOptions {
+    bool samples = false, pattern = false, resolve = false, shade_at = false;
+};
+
+// Throws std::invalid_argument naming the first option the method would
+// ignore: with one sample a pixel (none, post, or ssaa and msaa at 1, which
+// draw --aa none's picture) a sample count, a pattern, a resolve or the
+// encoded resolve; a place to shade but for msaa; the encoded resolve under
+// a tone map.
+void refuse_unused_options(const AaOptions& options, const GivenOptions& given);
+
 // A frame holds 16 bytes a sample (linear colour in float and depth): its
 // samples, pixels times samples a pixel, are capped at 2^26 (1 GiB; 4096 x
 // 4096 at 4 samples, 2048 x 2048 at 16).

@@ -29,7 +29,7 @@ void bind_lesson09(py::module_ m) {
            const std::string& tangents, bool skybox) {
             check_size(width, height);
             environment::EnvironmentOptions env_options;
-            env_options.source = model_path(source, "environment");
+            env_options.source = environment_source(source);
             env_options.layout = choice("--map", map, environment::kLayouts);
             env_options.size = map_size;
             env_options.filter = choice("--filter", filter, environment::kMapFilters);
@@ -61,6 +61,22 @@ void bind_lesson09(py::module_ m) {
             Result r;
             py::gil_scoped_release unlocked;
             const auto scene = environment::load_scene(view, frames, width, height, r.warnings);
+            // As the program: an option the materials would ignore is
+            // refused; here one counts as given when it is not its default.
+            const environment::RenderOptions d;
+            environment::refuse_unused_options(
+                options, env_options, scene.models.size(),
+                {.roughness = options.roughness != d.roughness,
+                 .metal = options.metal != d.metal,
+                 .glossy = options.glossy != d.glossy,
+                 .lookup = options.lookup != d.lookup,
+                 .single_scatter = !multiple_scattering,
+                 .glossy_levels = glossy_levels != d.prefilter.levels,
+                 .glossy_size = glossy_size != d.prefilter.size,
+                 .glossy_samples = glossy_samples != d.prefilter.samples,
+                 .irradiance = options.irradiance != d.irradiance,
+                 .samples = samples != d.samples,
+                 .map_size = map_size != environment::EnvironmentOptions{}.size});
             check_signals();
             const environment::Environment env =
                 environment::make_environment(env_options, r.warnings);

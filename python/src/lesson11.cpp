@@ -33,15 +33,14 @@ void bind_lesson11(py::module_ m) {
             options.tone = choice("--tone-map", tone_map, antialiasing::kToneOrders);
             options.exposure_stops = finite("--exposure", exposure, -16, 16);
             options.resolve_encoded = resolve_encoded;
-            if (resolve_encoded && options.tone != antialiasing::ToneOrder::none)
-                throw std::invalid_argument(
-                    "--resolve-encoded: the encoded resolve is shown without a tone map");
             const double orbit_degrees = finite("--orbit", orbit, -360, 360);
-            // As the program: options the method would ignore are refused.
-            if (antialiasing::samples_of(options) == 1 && samples && *samples != 1)
-                throw std::invalid_argument("--samples: --aa " + aa + " takes one sample a pixel");
-            if (options.method != antialiasing::Method::msaa && shade_at)
-                throw std::invalid_argument("--shade-at: only --aa msaa shades once a pixel");
+            // As the program: options the method would ignore are refused
+            // (here a pattern or resolve counts as given when not its default).
+            antialiasing::refuse_unused_options(
+                options, {.samples = samples.has_value(),
+                          .pattern = options.pattern != antialiasing::AaOptions{}.pattern,
+                          .resolve = options.resolve != antialiasing::AaOptions{}.resolve,
+                          .shade_at = shade_at.has_value()});
             antialiasing::check(options);
             antialiasing::check_frame_size(width, height, antialiasing::samples_of(options));
             shadows::ShadowOptions shadow;

@@ -16,6 +16,15 @@ std::string model_path(py::handle model, const char* keyword) {
                          std::string(py::str(py::type::of(model).attr("__name__"))));
 }
 
+std::string environment_source(py::handle environment) {
+    if (py::isinstance<py::str>(environment) || py::hasattr(environment, "__fspath__"))
+        return fs_path(environment, "environment").string();
+    throw py::type_error(
+        "environment: a name (sky, studio, white) or the path of a lat-long .hdr file (str or "
+        "os.PathLike), not " +
+        std::string(py::str(py::type::of(environment).attr("__name__"))));
+}
+
 std::vector<std::string> model_paths(py::handle models) {
     if (models.is_none()) return {};
     if (py::isinstance<Mesh>(models) || py::isinstance<py::str>(models) ||

@@ -41,6 +41,11 @@ struct Camera {
 // the argument in a refusal (a path with a NUL in it).
 std::string model_path(py::handle model, const char* keyword = "model");
 
+// Lesson 09's environment argument (and lesson 10's when not None): the
+// name of an analytic one or the path of a lat-long .hdr file, as a str or
+// an os.PathLike; anything else is a TypeError naming the argument.
+std::string environment_source(py::handle environment);
+
 // None (the lesson's default scene), one model or a sequence of them (at most
 // perspective::kMaxModels, as --model).
 std::vector<std::string> model_paths(py::handle models);

@@ -1,7 +1,8 @@
 """Ctrl-C during a render: KeyboardInterrupt between the render's steps
-(loading, lesson 08's shadow map, drawing), between lesson 12's frames, and
-inside a frame (between bands of a triangle's rows), not only when the whole
-render returns; and an interrupted save writes
+(loading, lesson 08's shadow map, drawing), between lesson 12's frames,
+inside a frame (between bands of a triangle's rows), and inside lesson 09's
+map building and lesson 10's bake (a checkpoint a row or a face), not only
+when the whole render returns; and an interrupted save writes
 nothing. Each runs in a child process, sent SIGINT as Ctrl-C sends it."""
 
 import os
@@ -17,6 +18,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scripts"))
 from ctrl_c_latency import CHILD  # noqa: E402  (the child that runs one call)
 
 BOUND = 5.0  # seconds from SIGINT to KeyboardInterrupt: generous
+OBJ = pathlib.Path(__file__).resolve().parents[2] / "obj"
 
 
 def interrupt(expression, after):
@@ -60,6 +62,26 @@ def test_ctrl_c_stops_a_frame_part_way():
     # 2.5 s, and a SIGINT during it is answered only when it ends (1.8 s later,
     # seen once), which is the step boundary, not the band's.
     latency = interrupt("rasterlab.lesson07.render(width=8192, height=8192)", 4.0)
+    assert latency < 1.0
+
+
+def test_ctrl_c_stops_lesson09_while_it_builds_its_maps():
+    # The sky as a 2048² cube map, then its irradiance and blurred maps: tens
+    # of seconds of building before the first pixel (KeyboardInterrupt came
+    # 49 s after the signal on a loaded machine). Each of those loops now
+    # passes a checkpoint a row. SIGINT 2 s in: past loading (0.2-0.5 s).
+    latency = interrupt("rasterlab.lesson09.render(map_size=2048, width=64, height=64)", 2.0)
+    assert latency < 1.0
+
+
+def test_ctrl_c_stops_lesson10_while_it_bakes():
+    # 1024 rays a vertex over the torus, the globe and the rock, twice: about
+    # 10 s of baking here after 0.4 s of loading (KeyboardInterrupt came only
+    # when the bake ended: 23 s after the signal for the default scene on a
+    # loaded machine); now a checkpoint a face. SIGINT 2 s in: baking.
+    models = repr([str(OBJ / name) for name in ("torus.obj", "globe.obj", "rock.obj")] * 2)
+    latency = interrupt(f"rasterlab.lesson10.render({models}, ao='baked', samples=1024, "
+                        "width=64, height=64)", 2.0)
     assert latency < 1.0
 
 

@@ -125,6 +125,49 @@ def test_spot_options_need_a_spot_light(programs):
         programs.error("08", "--cone", 30)
 
 
+# Options that would change nothing: refused with the program's message, not
+# ignored (the picture was the same as without them). Each pair: the call's
+# keywords, and the program's arguments.
+UNUSED = [
+    ("09", dict(material="mirror", roughness=0.9), ["--material", "mirror", "--roughness", 0.9]),
+    ("09", dict(material="glass", metal=(1, 1, 1)), ["--material", "glass", "--metal", 1, 1, 1]),
+    ("09", dict(material="plastic", metal=(1, 1, 1)),
+     ["--material", "plastic", "--metal", 1, 1, 1]),
+    ("09", dict(samples=16), ["--samples", 16]),
+    ("09", dict(glossy="monte-carlo", glossy_levels=3),
+     ["--glossy", "monte-carlo", "--glossy-levels", 3]),
+    ("09", dict(glossy="monte-carlo", lookup="mirror"),
+     ["--glossy", "monte-carlo", "--lookup", "mirror"]),
+    ("09", dict(material="mirror", irradiance="sh3"), ["--material", "mirror", "--irradiance", "sh3"]),
+    ("09", dict(material="glass", multiple_scattering=False),
+     ["--material", "glass", "--single-scatter"]),
+    ("10", dict(ao="none", radius=3), ["--ao", "none", "--radius", 3]),
+    ("10", dict(ao="none", samples=64), ["--ao", "none", "--samples", 64]),
+    ("10", dict(ao="baked", blur=4), ["--ao", "baked", "--blur", 4]),
+    ("10", dict(ao="baked", rotation=False), ["--ao", "baked", "--no-rotation"]),
+    ("10", dict(environment="sky", light=(1, 1, 1)), ["--environment", "sky", "--light", 1, 1, 1]),
+    ("11", dict(aa="ssaa", samples=1), ["--aa", "ssaa", "--samples", 1]),
+    ("11", dict(aa="none", resolve_encoded=True), ["--aa", "none", "--resolve-encoded"]),
+    ("11", dict(aa="post", resolve="tent"), ["--aa", "post", "--resolve", "tent"]),
+    ("11", dict(aa="none", pattern="grid"), ["--aa", "none", "--pattern", "grid"]),
+]
+
+
+@pytest.mark.parametrize("lesson, keywords, arguments", UNUSED,
+                         ids=[" ".join(map(str, a)) for _, _, a in UNUSED])
+def test_an_option_that_changes_nothing_is_refused(programs, lesson, keywords, arguments):
+    render = getattr(rasterlab, f"lesson{lesson}").render
+    message = refused(ValueError, lambda: render(width=64, height=48, **keywords))
+    assert message == programs.error(lesson, "--width", 64, "--height", 48, *arguments)
+    assert message.startswith("--"), message  # it names the option
+
+
+@pytest.mark.parametrize("environment", [42, b"sky", None])
+def test_what_an_environment_is(environment):
+    with pytest.raises(TypeError, match="environment: a name .* or the path of a lat-long .hdr"):
+        rasterlab.lesson09.render(environment=environment, width=16, height=16)
+
+
 # --- paths -------------------------------------------------------------------
 
 def test_a_path_that_is_not_utf8_is_named_in_the_message(programs, tmp_path):

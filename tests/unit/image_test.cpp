@@ -176,4 +176,56 @@ TEST(ImageIo, BrokenHdrFilesAreRefusedNamingTheCause) {
     EXPECT_THROW(rl::load_hdr_image(dir.path() / "cut.hdr"), rl::FileError);
 }
 
+// A resolution line's numbers past an int: stb_image's strtol cast to int
+// read 4294967297 as 1, and the file loaded as 8x1 with no word.
+TEST(ImageIo, AnHdrSizePastAnIntIsACorruptHeader) {
+    rl_test::TempDir dir;
+    const std::string header = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n";
+    const std::string pixels(8 * 4 * 4, '\x10');  // flat texels enough for 8x4
+    const auto refusal = [&](const std::string& name, const std::string& resolution) {
+        rl_test::write_text(dir.path() / name, header + resolution + "\n" + pixels);
+        try {
+            const HdrImage image = rl::load_hdr_image(dir.path() / name);
+            return "loaded " + std::to_string(image.width()) + "x" + std::to_string(image.height());
+        } catch (const rl::FileError& e) {
+            return std::string(e.what());
+        }
+    };
+    EXPECT_EQ(refusal("fine.hdr", "-Y 4 +X 8"), "loaded 8x4");
+    for (const std::string line : {"-Y 4294967297 +X 8", "-Y 4294967300 +X 4294967304",
+                                   "-Y 2147483648 +X 8", "-Y -4 +X 8", "-Y 4 +X 8x"}) {
+        const std::string message = refusal("wrapped.hdr", line);
+        EXPECT_NE(message.find("corrupt header: the resolution line"), std::string::npos)
+            << line << ": " << message;
+    }
+}
+
+// A cap is applied from the header, before a texel is decoded: a header
+// alone claiming 16384x8192 names the cap, not the missing pixels.
+TEST(ImageIo, AnHdrPastTheCallersCapIsRefusedBeforeDecoding) {
+    rl_test::TempDir dir;
+    const rl::ImageCap cap{4096, 2048, "the test's cap"};
+    rl_test::write_text(dir.path() / "huge.hdr",
+                        "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8192 +X 16384\n");
+    try {
+        rl::load_hdr_image(dir.path() / "huge.hdr", cap);
+        ADD_FAILURE() << "a 16384x8192 header loaded under a 4096x2048 cap";
+    } catch (const rl::FileError& e) {
+        EXPECT_NE(std::string(e.what()).find("a 16384x8192 image, past the test's cap of "
+                                             "4096x2048 texels"),
+                  std::string::npos)
+            << e.what();
+    }
+    // Whole, valid files: one texel past the cap either way is refused, the cap itself loads.
+    const auto write = [&](const std::string& name, int width, int height) {
+        const std::filesystem::path path = dir.path() / name;
+        rl_test::write_bytes(path, rl::encode_hdr(path, HdrImage(width, height, vec4{1, 1, 1, 1})));
+        return path;
+    };
+    EXPECT_THROW(rl::load_hdr_image(write("wide.hdr", 4097, 1), cap), rl::FileError);
+    EXPECT_THROW(rl::load_hdr_image(write("tall.hdr", 1, 2049), cap), rl::FileError);
+    EXPECT_EQ(rl::load_hdr_image(write("cap.hdr", 4096, 1), cap).width(), 4096);
+    EXPECT_EQ(rl::load_hdr_image(write("wide.hdr", 4097, 1)).width(), 4097);  // no cap given
+}
+
 }  // namespace

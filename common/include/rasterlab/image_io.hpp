@@ -8,7 +8,9 @@
 //   const rl::HdrImage sky = rl::load_hdr_image("sky.hdr");  // linear float RGB
 #pragma once
 
+#include <climits>
 #include <filesystem>
+#include <string>
 
 #include "rasterlab/image.hpp"
 #include "rasterlab/tga.hpp"
@@ -23,9 +25,20 @@ Image load_image(const std::filesystem::path& path);
 // A float image: linear RGB values of any size (light, not bytes), alpha 1.
 using HdrImage = Grid<vec4>;
 
+// The largest image a caller takes from a file, and what to call that
+// limit in a refusal ("lesson 09's cap on a lat-long map").
+struct ImageCap {
+    int width = INT_MAX;
+    int height = INT_MAX;
+    std::string name = "the cap";
+};
+
 // Reads a Radiance .hdr file (RGBE, flat or run-length encoded), by its
-// signature. Throws FileError naming the file and the problem.
-HdrImage load_hdr_image(const std::filesystem::path& path);
+// signature. The header is read first: an image wider or taller than `cap`
+// is refused before a texel is decoded (a few megabytes of run-length data
+// can claim gigabytes of float texels). Throws FileError naming the file and
+// the problem.
+HdrImage load_hdr_image(const std::filesystem::path& path, const ImageCap& cap = {});
 
 // The bytes of a Radiance .hdr file of the image (top row first in the
 // file, as the format requires). Values below 0 or not finite are refused.
