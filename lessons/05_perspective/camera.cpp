@@ -64,6 +64,16 @@ void check(const Camera& camera) {
                     "--eye/--near/--far: the camera's matrices overflow a float (near * far "
                     "or the eye's distance from the origin is beyond about 1e38); scale the "
                     "scene down");
+    // Within the matrices' range, a distance's square can still overflow.
+    if (camera.far > kMaxFar) {
+        char text[320];
+        std::snprintf(text, sizeof text,
+                      "--far: %.2g is past 1e19: a point drawn that far from the eye has a "
+                      "squared distance near a float's largest (3.4e38), and the shading goes "
+                      "wrong; bring the eye nearer or scale the scene down",
+                      static_cast<double>(camera.far));
+        throw std::invalid_argument(text);
+    }
 }
 
 std::string depth_precision_warning(const Camera& camera) {

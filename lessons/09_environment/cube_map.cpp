@@ -1,13 +1,12 @@
 #include "cube_map.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "rasterlab/checkpoint.hpp"
+#include "rasterlab/workers.hpp"
 
 namespace environment {
 
@@ -154,7 +153,7 @@ CubeMap cube_map(const std::function<rl::dvec3(rl::dvec3)>& radiance, int size, 
     // Every texel is its own sum, so rows go to both cores in any order and
     // the map is the same: `radiance` must be safe to call from two threads.
     // A checkpoint a row: a host's Ctrl-C stops a 2048² map within a row.
-    tbb::parallel_for(0, 6 * size, [&](int row) {
+    rl::parallel_for(0, 6 * size, [&](int row) {
         rl::checkpoint();
         const Face f = kFaces[static_cast<std::size_t>(row / size)];
         const int j = row % size;

@@ -1,7 +1,5 @@
 #include "ambient_occlusion.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -9,6 +7,7 @@
 #include <string>
 
 #include "09_environment/sphere_sampling.hpp"
+#include "rasterlab/workers.hpp"
 
 namespace occlusion {
 
@@ -202,7 +201,7 @@ Surfaces::Surfaces(const GBuffer& gbuffer, const Screen& s)
       screen(s),
       depth(g.width(), g.height(), NAN),
       position(g.width(), g.height(), rl::vec3{NAN, NAN, NAN}) {
-    tbb::parallel_for(0, g.height(), [&](int y) {
+    rl::parallel_for(0, g.height(), [&](int y) {
         for (int x = 0; x < g.width(); ++x)
             if (const std::optional<rl::vec3> p = screen.position(g, x, y)) {
                 position.at(x, y) = *p;
@@ -233,7 +232,7 @@ rl::FloatImage raw_occlusion(const Surfaces& surfaces, const AoOptions& o) {
     rl::FloatImage ao(g.width(), g.height(), 1.0f);
     if (o.method == AoMethod::none) return ao;
     // Rows on every core: each pixel reads the G-buffer and writes its own.
-    tbb::parallel_for(0, g.height(), [&](int y) {
+    rl::parallel_for(0, g.height(), [&](int y) {
         for (int x = 0; x < g.width(); ++x) {
             const float depth = surfaces.depth.get(x, y);
             if (std::isnan(depth)) continue;
@@ -266,7 +265,7 @@ rl::FloatImage surface_blur(const rl::FloatImage& ao, const Surfaces& surfaces, 
     if (radius <= 0) return out;
     const GBuffer& g = surfaces.g;
     const float same_plane = 0.1f * ao_radius, same_facing = std::cos(rl::radians(25.0f));
-    tbb::parallel_for(0, g.height(), [&](int y) {
+    rl::parallel_for(0, g.height(), [&](int y) {
         for (int x = 0; x < g.width(); ++x) {
             if (std::isnan(surfaces.depth.get(x, y))) continue;
             const rl::vec3 p = surfaces.position.get(x, y), n = g.colour<kNormal>().get(x, y);

@@ -1,11 +1,10 @@
 #include "baked_ao.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <stdexcept>
 #include <string>
 
 #include "rasterlab/checkpoint.hpp"
+#include "rasterlab/workers.hpp"
 
 namespace occlusion {
 
@@ -46,7 +45,7 @@ BakedAo bake_vertex_ao(const std::vector<normal_mapping::MappedModel>& models,
         const rl::mat4& transform = models[i].lit.model.transform;
         const rl::mat3 to_world = shading::normal_matrix(transform).value_or(rl::mat3::identity());
         std::vector<float>& values = out.corners.emplace_back(3 * mesh.faces.size(), 1.0f);
-        tbb::parallel_for(std::size_t{0}, mesh.faces.size(), [&](std::size_t f) {
+        rl::parallel_for(std::size_t{0}, mesh.faces.size(), [&](std::size_t f) {
             rl::checkpoint();  // a host's Ctrl-C, between faces
             for (int k = 0; k < 3; ++k) {
                 const std::size_t c = 3 * f + static_cast<std::size_t>(k);

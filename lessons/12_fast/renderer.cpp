@@ -2,7 +2,7 @@
 
 #include "orbit.hpp"
 #include "rasterlab/checkpoint.hpp"
-#include "workers.hpp"
+#include "rasterlab/workers.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -103,7 +103,7 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
 struct Renderer::Impl {
     FastOptions options;
     int width, height;
-    Workers workers;
+    rl::Workers workers;
     std::vector<FastModel> models;
     // Per model, set once: lesson 06's uniforms (only the MVP and the eye
     // change from frame to frame) and the surface; empty for a model whose
@@ -585,7 +585,7 @@ void Renderer::Impl::for_each_tile(Body&& body) {
     };
     if (options.parallel)
         workers.for_chunks(tiles, 1, [&](const tbb::blocked_range<std::size_t>& range) {
-            TileBuffers& own = *buffers[static_cast<std::size_t>(Workers::this_thread())];
+            TileBuffers& own = *buffers[static_cast<std::size_t>(rl::Workers::this_thread())];
             for (std::size_t i = range.begin(); i != range.end(); ++i) draw_tile(i, own);
         });
     else

@@ -1,8 +1,10 @@
 // libFuzzer target: loading a texture file as the lessons do, by extension:
 // .tga through our codec, JPEG through libjpeg-turbo, PNG/BMP through
-// stb_image, and float images (Radiance .hdr) through stb_image. The first
-// input byte picks the extension (0xf0 and up: .hdr); the rest is the file.
-// It is refused with a FileError or loaded into a non-empty image.
+// stb_image, and float images (Radiance .hdr) through our header parser and
+// stb_image. The first input byte picks the extension (0xf0 and up: .hdr;
+// 0xf8 and up: .hdr under a cap of 64 x 64, as lesson 09 caps its maps); the
+// rest is the file. It is refused with a FileError or loaded into a non-empty
+// image (within the cap, when there is one).
 // Run: build-fuzz/tests/fuzz/fuzz_texture tests/fuzz/corpus/texture
 #include <unistd.h>
 
@@ -32,8 +34,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     try {
         if (hdr) {
-            const rl::HdrImage image = rl::load_hdr_image(path);
+            const rl::ImageCap cap{64, 64, "the fuzz cap"};
+            const bool capped = data[0] >= 0xf8;
+            const rl::HdrImage image =
+                capped ? rl::load_hdr_image(path, cap) : rl::load_hdr_image(path);
             if (image.width() <= 0 || image.height() <= 0) std::abort();
+            if (capped && (image.width() > cap.width || image.height() > cap.height)) std::abort();
         } else {
             const rl::Image image = rl::load_image(path);
             if (image.width() <= 0 || image.height() <= 0) std::abort();

@@ -1,4 +1,4 @@
-#include "workers.hpp"
+#include "rasterlab/workers.hpp"
 
 #include <algorithm>
 
@@ -17,7 +17,7 @@ void AnnotateIgnoreWritesEnd(const char* file, int line);
 }
 #endif
 
-namespace fast {
+namespace rl {
 
 #if defined(__SANITIZE_THREAD__)
 namespace thread_sanitizer {
@@ -99,4 +99,11 @@ Workers::Workers(int threads)
 
 Workers::~Workers() = default;
 
-}  // namespace fast
+Workers& shared_workers() {
+    // Never destroyed: an arena torn down among the static destructors at
+    // exit could outlive oneTBB's own state.
+    static Workers* const shared = new Workers(0);
+    return *shared;
+}
+
+}  // namespace rl
