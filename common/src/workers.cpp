@@ -25,17 +25,22 @@ namespace thread_sanitizer {
 namespace {
 char fork, join;  // the addresses the fork and the join synchronize on
 
-// Whether this thread is a worker outside a chunk (its accesses ignored).
-// A worker may end while still in the arena, with no exit call from oneTBB:
-// the sanitizer must then find its ignores ended, hence the destructor.
+// Whether this thread is in an arena, and whether its accesses are ignored
+// now (in an arena but outside a chunk). A worker may end while still in the
+// arena, with no exit call from oneTBB: the sanitizer must then find its
+// ignores ended, hence the destructor. Ignores are nested counts in the
+// sanitizer, so each change is made once, from the state held here (a chunk
+// that throws, as a host's Ctrl-C does, leaves the arena in sight).
 struct OutOfSight {
-    bool now = false;
+    bool in_arena = false, ignoring = false;
     ~OutOfSight();
 };
 thread_local OutOfSight out_of_sight;
 }  // namespace
 
 void ignore_accesses(bool ignore) {
+    if (out_of_sight.ignoring == ignore) return;
+    out_of_sight.ignoring = ignore;
     if (ignore) {
         AnnotateIgnoreReadsBegin(__FILE__, __LINE__);
         AnnotateIgnoreWritesBegin(__FILE__, __LINE__);
@@ -44,8 +49,9 @@ void ignore_accesses(bool ignore) {
         AnnotateIgnoreWritesEnd(__FILE__, __LINE__);
     }
 }
+
 OutOfSight::~OutOfSight() {
-    if (now) ignore_accesses(false);
+    ignore_accesses(false);
 }
 
 void chunks_began() {
@@ -53,32 +59,33 @@ void chunks_began() {
 }
 void chunk_starts() {
     __tsan_acquire(&fork);
-    if (out_of_sight.now) ignore_accesses(false);
+    ignore_accesses(false);
 }
 void chunk_ended() {
-    if (out_of_sight.now) ignore_accesses(true);
+    if (out_of_sight.in_arena) ignore_accesses(true);
     __tsan_release(&join);
 }
 void chunks_ended() {
     __tsan_acquire(&join);
 }
 
-// A worker thread is out of sight from the moment it enters the arena; the
-// thread that calls for_chunks stays in sight throughout.
+// A thread is out of sight from the moment it enters the arena, a worker
+// or a caller of for_chunks alike: a caller waiting in a shared arena runs
+// other callers' chunks and oneTBB's tasks, and oneTBB reuses the memory of
+// one caller's tasks for another's (seen under ThreadSanitizer, with four
+// Python threads rendering at once). In a chunk every thread is in sight.
 struct WorkersOutOfSight : tbb::task_scheduler_observer {
     explicit WorkersOutOfSight(tbb::task_arena& arena) : tbb::task_scheduler_observer(arena) {
         observe(true);
     }
     ~WorkersOutOfSight() override { observe(false); }
-    void on_scheduler_entry(bool worker) override {
-        if (!worker || out_of_sight.now) return;
-        out_of_sight.now = true;
+    void on_scheduler_entry(bool) override {
+        out_of_sight.in_arena = true;
         ignore_accesses(true);
     }
-    void on_scheduler_exit(bool worker) override {
-        if (!worker || !out_of_sight.now) return;
+    void on_scheduler_exit(bool) override {
+        out_of_sight.in_arena = false;
         ignore_accesses(false);
-        out_of_sight.now = false;
     }
 };
 

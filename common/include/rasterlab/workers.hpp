@@ -10,10 +10,11 @@
 //
 // Under ThreadSanitizer (the `tsan` preset) oneTBB's scheduler is out of its
 // sight: libtbb is not instrumented, so a task handed from one thread to
-// another looks like a race. There, the workers' own accesses inside oneTBB
-// are ignored, and the loop tells the sanitizer what oneTBB guarantees and
-// nothing more: every chunk starts after for_chunks began and ends before it
-// returns. Two chunks stay unordered, so a race between tiles is reported.
+// another looks like a race. There, what any thread does in an arena outside
+// a chunk (oneTBB's own work) is ignored, and the loop tells the sanitizer
+// what oneTBB guarantees and nothing more: every chunk starts after
+// for_chunks began and ends before it returns. Two chunks stay unordered, so
+// a race between tiles (or rows) is reported.
 #pragma once
 
 #include <tbb/blocked_range.h>
@@ -28,7 +29,7 @@ namespace rl {
 
 #if defined(__SANITIZE_THREAD__)
 namespace thread_sanitizer {
-void ignore_accesses(bool ignore);  // on this thread, nested
+void ignore_accesses(bool ignore);  // on this thread (each change made once)
 void chunks_began(), chunk_starts(), chunk_ended(), chunks_ended();
 struct WorkersOutOfSight;  // ignores what a worker does outside a chunk
 }  // namespace thread_sanitizer
@@ -48,19 +49,26 @@ class Workers {
         const tbb::blocked_range<std::size_t> all(0, count, grain);
 #if defined(__SANITIZE_THREAD__)
         namespace ts = thread_sanitizer;
+        // The ends are told by destructors: a chunk may throw (a host's Ctrl-C).
+        struct ChunksEnded {
+            ~ChunksEnded() { ts::chunks_ended(); }
+        };
+        struct ChunkEnded {
+            ~ChunkEnded() { ts::chunk_ended(); }
+        };
         ts::chunks_began();
+        const ChunksEnded loop;
         arena_.execute([&] {
             tbb::parallel_for(all, [&](const tbb::blocked_range<std::size_t>& range) {
                 // oneTBB wrote the task this lambda and its range live in: read
-                // them while a worker is still out of sight.
+                // them while the thread is still out of sight.
                 const Body& chunk_body = body;
                 const tbb::blocked_range<std::size_t> chunk = range;
                 ts::chunk_starts();
+                const ChunkEnded ended;
                 chunk_body(chunk);
-                ts::chunk_ended();
             });
         });
-        ts::chunks_ended();
 #else
         arena_.execute([&] { tbb::parallel_for(all, body); });
 #endif

@@ -1,12 +1,11 @@
 #include "ao_truth.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "05_perspective/lab/ray_truth.hpp"
+#include "rasterlab/workers.hpp"
 
 namespace occlusion {
 
@@ -15,7 +14,7 @@ TruthFrame truth_frame(const RayTracedAo& rays, const perspective::Camera& camer
                        int height, double radius, int count) {
     TruthFrame out{rl::FloatImage(width, height, NAN), rl::FloatImage(width, height, NAN)};
     const perspective::RayCamera eye(camera, width, height);
-    tbb::parallel_for(0, height, [&](int y) {
+    rl::parallel_for(0, height, [&](int y) {
         for (int x = 0; x < width; ++x) {
             const rl::dvec3 d = eye.direction(x + 0.5, y + 0.5);  // t along it is view depth
             const std::optional<RayTracedAo::Hit> hit =

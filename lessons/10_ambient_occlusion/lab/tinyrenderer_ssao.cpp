@@ -1,10 +1,10 @@
 #include "tinyrenderer_ssao.hpp"
 
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 #include <random>
+
+#include "rasterlab/workers.hpp"
 
 namespace occlusion {
 
@@ -30,7 +30,7 @@ rl::FloatImage tinyrenderer_ssao(const Surfaces& surfaces, int samples, std::uin
     // coordinates: the same reach across and down).
     const float box_pixels = kBoxHalfSide * 0.5f * static_cast<float>(width);
     rl::FloatImage ao(width, height, 1.0f);
-    tbb::parallel_for(0, height, [&](int y) {
+    rl::parallel_for(0, height, [&](int y) {
         std::mt19937 random(seed * 2654435761u + static_cast<std::uint32_t>(y));
         std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
         for (int x = 0; x < width; ++x) {
