@@ -162,6 +162,20 @@ def test_an_option_that_changes_nothing_is_refused(programs, lesson, keywords, a
     assert message.startswith("--"), message  # it names the option
 
 
+CORPUS = pathlib.Path(__file__).resolve().parents[2] / "tests" / "robustness" / "corpus"
+
+
+@pytest.mark.parametrize("lesson", ["09", "10"])
+@pytest.mark.parametrize("name", ["huge_latlong.hdr", "wrapped_resolution.hdr"])
+def test_an_environment_file_past_the_cap_or_with_a_wrapped_size(programs, lesson, name):
+    # Refused from the header before a texel is decoded (a 16384x8192 file
+    # was decoded whole: 150 s and 3.6 GB), as the programs refuse it.
+    hdr = CORPUS / name
+    render = getattr(rasterlab, f"lesson{lesson}").render
+    assert refused(OSError, lambda: render(environment=hdr, width=16, height=16)) == \
+        programs.error(lesson, "--width", 16, "--height", 16, "--environment", hdr)
+
+
 @pytest.mark.parametrize("environment", [42, b"sky", None])
 def test_what_an_environment_is(environment):
     with pytest.raises(TypeError, match="environment: a name .* or the path of a lat-long .hdr"):
