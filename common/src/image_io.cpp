@@ -151,7 +151,10 @@ struct HdrHeader {
 // A resolution line's number: decimal digits only, at most INT_MAX. stb_image
 // reads it with strtol cast to int, so 4294967297 became 1 and a file loaded
 // as another size without a word; here such a number is a corrupt header.
+// As strtol reads it: blanks, then an optional plus sign, then digits.
 std::optional<int> resolution_number(std::string_view& line) {
+    while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1);
+    if (!line.empty() && line.front() == '+') line.remove_prefix(1);
     std::size_t digits = 0;
     long long value = 0;
     while (digits < line.size() && line[digits] >= '0' && line[digits] <= '9') {
@@ -184,7 +187,8 @@ HdrHeader read_hdr_header(const std::filesystem::path& path, std::span<const std
         return true;
     };
     const auto spaces = [&] {
-        while (!line.empty() && (line.front() == ' ' || line.front() == '\r'))
+        while (!line.empty() &&
+               (line.front() == ' ' || line.front() == '\t' || line.front() == '\r'))
             line.remove_prefix(1);
     };
     if (!skip("-Y ")) throw corrupt("is not '-Y <height> +X <width>'");

@@ -92,6 +92,20 @@ struct WorkersOutOfSight : tbb::task_scheduler_observer {
 }  // namespace thread_sanitizer
 #endif
 
+namespace {
+thread_local int g_loops_waited = 0;  // LoopWaited alive on this thread
+}  // namespace
+
+LoopWaited::LoopWaited() noexcept {
+    ++g_loops_waited;
+}
+LoopWaited::~LoopWaited() {
+    --g_loops_waited;
+}
+bool LoopWaited::here() noexcept {
+    return g_loops_waited > 0;
+}
+
 // oneTBB runs at most the machine's hardware threads at once: an arena
 // asked for more gets no more workers (and oneTBB prints a bare warning),
 // yet would report the number asked for. So ask for no more than that.

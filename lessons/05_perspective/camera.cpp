@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "rasterlab/transform.hpp"
@@ -64,14 +65,21 @@ void check(const Camera& camera) {
                     "--eye/--near/--far: the camera's matrices overflow a float (near * far "
                     "or the eye's distance from the origin is beyond about 1e38); scale the "
                     "scene down");
+}
+
+void check_reach(const Camera& camera, float aspect) {
     // Within the matrices' range, a distance's square can still overflow.
-    if (camera.far > kMaxFar) {
-        char text[320];
+    const double t = std::tan(static_cast<double>(camera.fov_y) * std::numbers::pi / 360);
+    const double a = aspect;
+    const double reach = camera.far * std::sqrt(1 + t * t * (1 + a * a));
+    if (!(reach <= kMaxReach)) {
+        char text[400];
         std::snprintf(text, sizeof text,
-                      "--far: %.2g is past 1e19: a point drawn that far from the eye has a "
-                      "squared distance near a float's largest (3.4e38), and the shading goes "
-                      "wrong; bring the eye nearer or scale the scene down",
-                      static_cast<double>(camera.far));
+                      "--far/--fov: the far plane's corners lie %.2g from the eye, past 1e19: a "
+                      "point drawn there has a squared distance near a float's largest (3.4e38), "
+                      "and the shading goes wrong; bring the eye nearer, lower --far or --fov, "
+                      "or scale the scene down",
+                      reach);
         throw std::invalid_argument(text);
     }
 }

@@ -36,18 +36,24 @@ struct Camera {
 // refused; below kWarnedNearOverFar it is drawn with a warning.
 inline constexpr double kSmallestNearOverFar = 1e-7, kWarnedNearOverFar = 1e-5;
 
-// The farthest far plane: every point drawn lies within about far of the
-// eye, and shading squares that distance in float, whose largest value
-// (3.4e38) is the square of 1.8e19. Measured with the torus scaled to fill
-// the view: lesson 12 matches lesson 07 with the eye 1.8e19 away, differs
-// in 0.3% of pixels at 1.9e19 and in 15% at 2.2e19 (docs/robustness.md).
-inline constexpr float kMaxFar = 1e19f;
+// The farthest a point drawn may lie from the eye: the far plane's corners,
+// far * sqrt(1 + tan^2(fov_y / 2) (1 + aspect^2)) away. Shading squares that
+// distance in float, whose largest value (3.4e38) is the square of 1.8e19.
+// Measured with the torus scaled to fill the view: lesson 12 matches lesson
+// 07 with the eye 1.8e19 away, differs in 0.3% of pixels at 1.9e19 and in
+// 15% at 2.2e19 (docs/robustness.md).
+inline constexpr double kMaxReach = 1e19;
 
 // Throws std::invalid_argument, naming the option to change, unless the
-// camera defines a projection: 0 < fov_y < 180, 0 < near < far <= kMaxFar,
-// near / far at least kSmallestNearOverFar, eye != target, and up not
-// parallel to the viewing direction.
+// camera defines a projection: 0 < fov_y < 180, 0 < near < far, near / far
+// at least kSmallestNearOverFar, eye != target, and up not parallel to the
+// viewing direction.
 void check(const Camera& camera);
+
+// Throws std::invalid_argument, naming --far and --fov, when the corners of
+// the far plane of `camera` seen at `aspect` (width / height) lie farther
+// than kMaxReach from the eye.
+void check_reach(const Camera& camera, float aspect);
 
 // The warning for a near / far below kWarnedNearOverFar, or empty.
 std::string depth_precision_warning(const Camera& camera);

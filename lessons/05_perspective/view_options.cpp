@@ -31,6 +31,7 @@ Camera resolve_camera(const ViewOptions& view, const Box& box, float aspect) {
         view.eye.empty() || view.target.empty() || !view.near_given || !view.far_given;
     try {
         check(camera);
+        check_reach(camera, aspect);
     } catch (const std::invalid_argument& e) {
         if (!derived || box.empty()) throw;
         // The user gave only part of this camera: say where the rest came from.

@@ -38,8 +38,8 @@ rl::HdrImage cleaned(rl::HdrImage image, const std::string& path,
 // The largest .hdr file a program reads (see make_environment).
 const rl::ImageCap& file_cap() {
     static const rl::ImageCap cap{2 * kMaxMapSize, kMaxMapSize,
-                                  "lesson 09's cap on a lat-long map (at most " +
-                                      std::to_string(kMaxMapSize) + " texels high, as --map-size)"};
+                                  "lesson 09's cap on a lat-long map (as high as its largest "
+                                  "map, twice as wide)"};
     return cap;
 }
 

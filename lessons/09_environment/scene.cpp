@@ -81,12 +81,15 @@ SurfaceMaterial material_of(const RenderOptions& options, std::size_t index) {
 
 void refuse_unused_options(const RenderOptions& options, const EnvironmentOptions& environment,
                            std::size_t model_count, const GivenOptions& given) {
+    // Diffuse light reaches a diffuse surface, a plastic's base, and a rough
+    // metal only as the light its facets bounce (none with --single-scatter).
     bool glossy = false, metal = false, diffuse = false;
     for (std::size_t i = 0; i < model_count; ++i) {
         const Material m = material_of(options, i).material;
         glossy |= is_glossy(m);
         metal |= m == Material::rough_metal;
-        diffuse |= is_glossy(m) || m == Material::diffuse;
+        diffuse |= m == Material::diffuse || m == Material::plastic ||
+                   (m == Material::rough_metal && options.multiple_scattering);
     }
     const bool split_sum = glossy && options.glossy == Glossy::split_sum;
     const bool monte_carlo = (glossy && options.glossy == Glossy::monte_carlo) ||
@@ -96,14 +99,16 @@ void refuse_unused_options(const RenderOptions& options, const EnvironmentOption
     };
     const std::string materials = options.material
                                       ? std::string("--material ") + name(*options.material)
-                                      : std::string("a mirror as the only model");
+                                  : model_count > 1 ? std::string("a mirror and rough metal")
+                                                    : std::string("a mirror as the only model");
     const std::string no_glossy = "no model is rough-metal or plastic (" + materials + ")";
     refuse(given.roughness && !glossy, "--roughness", no_glossy);
     refuse(given.glossy && !glossy, "--glossy", no_glossy);
     refuse(given.single_scatter && !glossy, "--single-scatter", no_glossy);
     refuse(given.metal && !metal, "--metal", "no model is rough-metal (" + materials + ")");
     refuse(given.irradiance && !diffuse, "--irradiance",
-           "no model is diffuse, rough-metal or plastic (" + materials + ")");
+           "no model reads diffuse light (" + materials +
+               (options.multiple_scattering ? "" : ", and --single-scatter") + ")");
     const std::string no_split_sum =
         glossy ? "only the split sum reads blurred maps (--glossy monte-carlo gathers its own rays)"
                : no_glossy;

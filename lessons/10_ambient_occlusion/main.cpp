@@ -23,8 +23,8 @@ int main(int argc, char** argv) {
     view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
     perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
-    rl::add_method_option(app, "--ao", options.ao.method, occlusion::kAoMethods,
-                          "How the occlusion is found");
+    CLI::Option* ao_option = rl::add_method_option(
+        app, "--ao", options.ao.method, occlusion::kAoMethods, "How the occlusion is found");
     CLI::Option* samples = app.add_option("--samples", options.ao.samples,
                                           "Depth-buffer reads a pixel (1 to " +
                                               std::to_string(occlusion::kMaxAoSamples) +
@@ -68,8 +68,9 @@ int main(int argc, char** argv) {
         options.ao.rotate = !no_rotation;
         occlusion::check(options.ao);
         // Options the method (or the environment) would ignore are refused, not ignored.
-        occlusion::refuse_unused_options(options.ao, !environment_source.empty(),
-                                         {.samples = samples->count() > 0,
+        occlusion::refuse_unused_options(options.ao, !environment_source.empty(), show,
+                                         {.ao = ao_option->count() > 0,
+                                          .samples = samples->count() > 0,
                                           .radius = radius_option->count() > 0,
                                           .blur = blur->count() > 0,
                                           .no_rotation = no_rotation_flag->count() > 0,

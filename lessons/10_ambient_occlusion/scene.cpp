@@ -21,10 +21,20 @@ void check_frame_size(int width, int height) {
             "hold about 80 bytes a pixel");
 }
 
-void refuse_unused_options(const AoOptions& ao, bool environment, const GivenOptions& given) {
+void refuse_unused_options(const AoOptions& ao, bool environment, Show show,
+                           const GivenOptions& given) {
     const auto refuse = [](bool unused, const char* option, const std::string& why) {
         if (unused) throw std::invalid_argument(std::string(option) + ": " + why);
     };
+    const std::string shown = std::string("--show ") + name(show);
+    if (show != Show::image && show != Show::ao) {
+        const std::string no_occlusion = shown + " shows no occlusion";
+        refuse(given.ao, "--ao", no_occlusion);
+        refuse(given.samples, "--samples", no_occlusion);
+        refuse(given.radius, "--radius", no_occlusion);
+        refuse(given.blur, "--blur", no_occlusion);
+        refuse(given.no_rotation, "--no-rotation", no_occlusion);
+    }
     const bool none = ao.method == AoMethod::none, baked = ao.method == AoMethod::baked;
     const std::string no_occlusion = "--ao none finds no occlusion";
     refuse(given.samples && none, "--samples", no_occlusion);
@@ -33,8 +43,13 @@ void refuse_unused_options(const AoOptions& ao, bool environment, const GivenOpt
            none ? no_occlusion : "--ao baked is smooth per vertex, and not blurred");
     refuse(given.no_rotation && (none || baked), "--no-rotation",
            none ? no_occlusion : "--ao baked casts its rays per vertex, not by the screen's noise");
-    refuse(given.light && environment, "--light",
-           "the environment lights the scene, not lesson 08's lights");
+    // Lesson 08's lights reach the picture only as the direct light.
+    const bool lights_shown =
+        show == Show::direct || (!environment && (show == Show::image || show == Show::unoccluded));
+    refuse(given.light && !lights_shown, "--light",
+           environment ? "the environment lights the picture, not lesson 08's lights (--show "
+                         "direct shows their light alone)"
+                       : shown + " shows no light");
 }
 
 Frame render(const std::vector<normal_mapping::MappedModel>& models,

@@ -94,14 +94,19 @@ void check_frame_size(int width, int height);
 // The options a user set: on the command line, or (in Python) to a value
 // other than its default. Each must change the picture.
 struct GivenOptions {
-    bool samples = false, radius = false, blur = false, no_rotation = false, light = false;
+    bool ao = false, samples = false, radius = false, blur = false, no_rotation = false,
+         light = false;
 };
 
-// Throws std::invalid_argument naming the first given option that `ao`'s
+// Throws std::invalid_argument naming the first given option that the
+// picture `show` would not read: the occlusion's options where no occlusion
+// is shown (--show unoccluded and the G-buffer's images), or that `ao`'s
 // method would ignore (none uses no sample, radius or blur; baked rays are
-// neither turned nor blurred), or a light direction when an environment
-// (`environment`) lights the scene instead.
-void refuse_unused_options(const AoOptions& ao, bool environment, const GivenOptions& given);
+// neither turned nor blurred); the light's direction where no direct light
+// is shown (the occlusion, the albedo, the normals, the depth, and with an
+// `environment` everything but --show direct).
+void refuse_unused_options(const AoOptions& ao, bool environment, Show show,
+                           const GivenOptions& given);
 
 // Both passes and the occlusion, for `camera` at width x height. The baked
 // method reads `baked` (bake_vertex_ao with the same radius), or bakes

@@ -35,21 +35,22 @@ void bind_lesson10(py::module_ m) {
             options.shadow.render.normal_map =
                 choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);
-            // As the program: an option the method (or the environment)
-            // would ignore is refused; here one counts as given when it is
-            // not its default.
+            const std::optional<std::string> source =
+                environment ? std::optional(environment_source(*environment)) : std::nullopt;
+            // As the program: an option the method or the picture would
+            // ignore is refused; here one counts as given when it is not its
+            // default.
             const occlusion::AoOptions d;
             const std::vector<float> scene_light = {shadows::kSceneLight.x, shadows::kSceneLight.y,
                                                     shadows::kSceneLight.z};
-            occlusion::refuse_unused_options(options.ao, environment.has_value(),
-                                             {.samples = samples != d.samples,
+            occlusion::refuse_unused_options(options.ao, source.has_value(), picture,
+                                             {.ao = options.ao.method != d.method,
+                                              .samples = samples != d.samples,
                                               .radius = options.ao.radius != d.radius,
                                               .blur = blur != d.blur,
                                               .no_rotation = !rotation,
                                               .light = three("--light", light) != scene_light});
             const perspective::ViewOptions view = view_options(models, camera, light);
-            const std::optional<std::string> source =
-                environment ? std::optional(environment_source(*environment)) : std::nullopt;
             Result r;
             py::gil_scoped_release unlocked;
             std::optional<occlusion::EnvironmentLighting> lighting;

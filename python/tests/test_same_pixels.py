@@ -231,6 +231,13 @@ def test_lesson10_methods(programs, ao):
                         *turned, "--show", "ao", *SIZE))
 
 
+def test_lesson10_direct_light_under_an_environment(programs):
+    # The light's direction still reaches the direct light shown alone.
+    same(rasterlab.lesson10.render(environment="sky", show="direct", light=(1, 2, 3), **SMALL),
+         programs.image("10", "--environment", "sky", "--show", "direct", "--light", 1, 2, 3,
+                        *SIZE))
+
+
 def test_lesson10_gbuffer_depth(programs):
     same(rasterlab.lesson10.render(show="depth", normal_map="none", **SMALL),
          programs.image("10", "--show", "depth", "--normal-map", "none", *SIZE))

@@ -192,6 +192,8 @@ TEST(ImageIo, AnHdrSizePastAnIntIsACorruptHeader) {
         }
     };
     EXPECT_EQ(refusal("fine.hdr", "-Y 4 +X 8"), "loaded 8x4");
+    // What stb_image's strtol reads as well: blanks, a plus sign, a trailing blank.
+    EXPECT_EQ(refusal("blanks.hdr", "-Y  +4 +X \t8 \r"), "loaded 8x4");
     for (const std::string line : {"-Y 4294967297 +X 8", "-Y 4294967300 +X 4294967304",
                                    "-Y 2147483648 +X 8", "-Y -4 +X 8", "-Y 4 +X 8x"}) {
         const std::string message = refusal("wrapped.hdr", line);

@@ -16,7 +16,22 @@ using CheckpointHook = void (*)();
 // Installs `hook` for every thread (nullptr removes it); returns the old one.
 CheckpointHook set_checkpoint_hook(CheckpointHook hook) noexcept;
 
-// Calls the installed hook, if any.
+// Calls the installed hook, if any, unless a CheckpointsPaused is alive on
+// this thread.
 void checkpoint();
+
+// While one is alive on a thread, checkpoint() there does nothing: the
+// thread runs a piece of another thread's loop while it waits for a loop of
+// its own (rl::Workers makes one then), and a host's stop belongs to the
+// thread's own loop. Without it, Python's main thread, running a chunk of
+// another thread's render in the shared arena, raised KeyboardInterrupt in
+// that other render.
+class CheckpointsPaused {
+  public:
+    CheckpointsPaused() noexcept;
+    ~CheckpointsPaused();
+    CheckpointsPaused(const CheckpointsPaused&) = delete;
+    CheckpointsPaused& operator=(const CheckpointsPaused&) = delete;
+};
 
 }  // namespace rl

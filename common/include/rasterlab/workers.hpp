@@ -24,6 +24,9 @@
 #include <algorithm>
 #include <cstddef>
 #include <memory>
+#include <thread>
+
+#include "rasterlab/checkpoint.hpp"
 
 namespace rl {
 
@@ -34,6 +37,16 @@ void chunks_began(), chunk_starts(), chunk_ended(), chunks_ended();
 struct WorkersOutOfSight;  // ignores what a worker does outside a chunk
 }  // namespace thread_sanitizer
 #endif
+
+// Alive while this thread waits in for_chunks for a loop it asked for.
+class LoopWaited {
+  public:
+    LoopWaited() noexcept;
+    ~LoopWaited();
+    LoopWaited(const LoopWaited&) = delete;
+    LoopWaited& operator=(const LoopWaited&) = delete;
+    static bool here() noexcept;  // whether one is alive on this thread
+};
 
 class Workers {
   public:
@@ -47,6 +60,19 @@ class Workers {
     template <class Body>
     void for_chunks(std::size_t count, std::size_t grain, const Body& body) {
         const tbb::blocked_range<std::size_t> all(0, count, grain);
+        // A thread that waits for a loop of its own and runs a chunk of
+        // another caller's meanwhile (the arena is shared) pauses its
+        // checkpoints there: its host's stop is for its own loop, not for the
+        // other caller's (rasterlab/checkpoint.hpp). oneTBB's workers, which
+        // wait for no loop, pass them on as before.
+        const std::thread::id caller = std::this_thread::get_id();
+        const LoopWaited waiting;
+        const auto run = [&](const Body& chunk_body, const tbb::blocked_range<std::size_t>& chunk) {
+            if (std::this_thread::get_id() == caller || !LoopWaited::here())
+                return chunk_body(chunk);
+            const CheckpointsPaused paused;
+            chunk_body(chunk);
+        };
 #if defined(__SANITIZE_THREAD__)
         namespace ts = thread_sanitizer;
         // The ends are told by destructors: a chunk may throw (a host's Ctrl-C).
@@ -66,11 +92,14 @@ class Workers {
                 const tbb::blocked_range<std::size_t> chunk = range;
                 ts::chunk_starts();
                 const ChunkEnded ended;
-                chunk_body(chunk);
+                run(chunk_body, chunk);
             });
         });
 #else
-        arena_.execute([&] { tbb::parallel_for(all, body); });
+        arena_.execute([&] {
+            tbb::parallel_for(
+                all, [&](const tbb::blocked_range<std::size_t>& chunk) { run(body, chunk); });
+        });
 #endif
     }
 

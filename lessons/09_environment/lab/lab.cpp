@@ -27,8 +27,6 @@
 #include <memory>
 #include <numbers>
 
-#include <tbb/parallel_for.h>
-
 #include "09_environment/brdf.hpp"
 #include "09_environment/environment_shader.hpp"
 #include "09_environment/glossy_map.hpp"
@@ -39,6 +37,7 @@
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
+#include "rasterlab/workers.hpp"
 #include "sky_truth.hpp"
 
 namespace {
@@ -285,7 +284,7 @@ int main(int argc, char** argv) {
         std::vector<std::vector<rl::dvec3>> glossy_truth(roughnesses.size());
         for (std::size_t r = 0; r < roughnesses.size(); ++r) {
             glossy_truth[r].resize(points.size());
-            tbb::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
+            rl::parallel_for(std::size_t{0}, points.size(), [&](std::size_t i) {
                 glossy_truth[r][i] = exact_glossy(lab_sky, rl::cast<double>(points[i].n),
                                                   rl::cast<double>(points[i].v), roughnesses[r],
                                                   options.quick ? 12 : 18);
