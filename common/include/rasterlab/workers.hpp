@@ -34,7 +34,7 @@ namespace rl {
 namespace thread_sanitizer {
 void ignore_accesses(bool ignore);  // on this thread (each change made once)
 void chunks_began(), chunk_starts(), chunk_ended(), chunks_ended();
-struct WorkersOutOfSight;  // ignores what a worker does outside a chunk
+struct WorkersOutOfSight;  // ignores what any thread does in the arena outside a chunk
 }  // namespace thread_sanitizer
 #endif
 
