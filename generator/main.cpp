@@ -1,5 +1,5 @@
 // make_assets: writes the models and textures of obj/ (see obj/README.md).
-#include <CLI/CLI.hpp>
+#include "rasterlab/cli.hpp"
 
 #include <cstdio>
 #include <filesystem>
@@ -8,12 +8,12 @@
 #include "rasterlab/main_guard.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{"Generate rasterlab's own models and textures (deterministic)."};
+    rl::CommandLine app{"Generate rasterlab's own models and textures (deterministic)."};
     std::string out = "obj";
     std::vector<std::string> only;
     app.add_option("-o,--out", out, "Folder to write into")->capture_default_str();
     app.add_option("--model", only, "Make only these models (globe, crate, floor, torus, rock)");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
 
     return rl::guarded_main("make_assets", [&] {
         std::filesystem::create_directories(out);

@@ -83,7 +83,7 @@ int run(const Options& options) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 00, the framebuffer: draws a test card pixel by pixel, writes it as TGA "
         "(raw and RLE), reads it back and checks it."};
     Options o;
@@ -93,6 +93,6 @@ int main(int argc, char** argv) {
                  "Write the TGA output uncompressed (type 2) instead of RLE (type 10)");
     rl::add_method_option(app, "--misread", o.misread, lesson00::kMisreadings,
                           "Instead, write the card as a decoder with this mistake would show it");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("00_framebuffer", [&] { return run(o); });
 }

@@ -10,14 +10,15 @@
 #include "wireframe.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{"Lesson 01, lines: the wireframe of a model (orthographic, x and y in [-1, 1])."};
+    rl::CommandLine app{
+        "Lesson 01, lines: the wireframe of a model (orthographic, x and y in [-1, 1])."};
     std::string model = rl::project_model("rock").string();
     rl::ImageOptions image_options{"01_lines.tga"};
     lines::LineMethod method = lines::LineMethod::bresenham;
     rl::add_model_option(app, model);
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--method", method, lines::kLineMethods, "Line algorithm");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     // Not a structured binding: clang before 16 cannot capture one in a lambda.
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;

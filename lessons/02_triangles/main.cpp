@@ -10,7 +10,8 @@
 #include "rasterlab/main_guard.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{"Lesson 02, triangles: a model filled with flat Lambert shading (orthographic)."};
+    rl::CommandLine app{
+        "Lesson 02, triangles: a model filled with flat Lambert shading (orthographic)."};
     std::string model = rl::project_model("torus").string();
     rl::ImageOptions image_options{"02_triangles.tga"};
     triangles::RasterMethod method = triangles::RasterMethod::edge;
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
     app.add_flag("--owners", owners,
                  "Draw a fan of 4 triangles whose spokes run through pixel centres (16x16), each "
                  "pixel in the colour of the triangle that drew it: red where two did");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     // Not a structured binding: clang before 16 cannot capture one in a lambda.
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;

@@ -13,14 +13,14 @@
 #include "zfight.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 03, the z-buffer: overlapping models, hidden surfaces removed "
         "(orthographic, flat shading)."};
     std::string model;
     std::string depth_output;
     rl::ImageOptions image_options{"03_zbuffer.tga"};
     zbuffer::HsrMethod method = zbuffer::HsrMethod::zbuffer;
-    const CLI::Option* model_option = app.add_option(
+    const rl::Option* model_option = app.add_option(
         "-m,--model", model, "OBJ file to draw alone (default: the rock pierced by the torus)");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--hsr", method, zbuffer::kHsrMethods, "Hidden-surface method");
@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
            "--scene", scene_name,
            "models (the rock pierced by the torus), sticks (three sticks in a cycle) or soup "
            "(60 triangles piercing each other)")
-        ->check(CLI::IsMember(zbuffer::kProgramScenes))
+        ->check(rl::one_of(zbuffer::kProgramScenes))
         ->capture_default_str();
     auto* zfight = app.add_subcommand(
         "zfight",
@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
         ->check(rl::positive_number())
         ->capture_default_str();
     zfight->add_flag("--fitted", fitted, "Fit near and far to the planes instead");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     // Not a structured binding: clang before 16 cannot capture one in a lambda.
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;

@@ -9,7 +9,7 @@
 #include "textured.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 04, textures: a model with its diffuse texture (orthographic, z-buffered)."};
     std::string model = rl::project_model("crate").string();
     rl::ImageOptions image_options{"04_textures.tga"};
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
         ->check(rl::finite_number(1e-6, 1e6))
         ->capture_default_str();
     app.add_flag("--no-light", no_light, "Texture colour only, no Lambert shading");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     // Not a structured binding: clang before 16 cannot capture one in a lambda.
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;

@@ -10,7 +10,7 @@
 #include "view_cli.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 05, perspective: textured models through a look-at camera and a perspective "
         "projection, clipped in clip space, texture coordinates interpolated "
         "perspective-correctly."};
@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
                           "Texture filter");
     bool no_light = false;
     app.add_flag("--no-light", no_light, "Texture colour only, no Lambert shading");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

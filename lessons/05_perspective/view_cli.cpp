@@ -7,21 +7,21 @@ namespace perspective {
 namespace {
 
 // --eye, --target, --up: three finite numbers each.
-CLI::Option* add_point_option(CLI::App& app, const std::string& flag, std::vector<float>& point,
-                              const std::string& what) {
+rl::Option* add_point_option(rl::CommandLine& app, const std::string& flag,
+                             std::vector<float>& point, const std::string& what) {
     return app.add_option(flag, point, what + ", x y z")->expected(3)->check(rl::finite_number());
 }
 
 }  // namespace
 
-void add_view_options(CLI::App& app, ViewOptions& view, const std::string& default_scene) {
+void add_view_options(rl::CommandLine& app, ViewOptions& view, const std::string& default_scene) {
     app.add_option("-m,--model", view.models,
                    "OBJ file to draw, as stored (repeat for several, at most " +
                        std::to_string(kMaxModels) + "); default: " + default_scene)
         ->each([count = std::make_shared<std::size_t>(0)](const std::string&) {
             if (++*count > kMaxModels)
-                throw CLI::ValidationError("--model", "at most " + std::to_string(kMaxModels) +
-                                                          " models, each loaded whole");
+                throw rl::OptionError("at most " + std::to_string(kMaxModels) +
+                                      " models, each loaded whole");
         });
     add_point_option(app, "--eye", view.eye, "Camera position (default: framing the scene)");
     add_point_option(app, "--target", view.target, "Point looked at (default: the scene's centre)");

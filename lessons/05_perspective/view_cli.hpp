@@ -5,7 +5,7 @@
 //
 //   perspective::ViewOptions view;
 //   perspective::add_view_options(app, view, "floor, crate and globe from obj/");
-//   CLI11_PARSE(app, argc, argv);
+//   if (const auto exit = app.parse(argc, argv)) return *exit;
 //   const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
 #pragma once
 
@@ -17,6 +17,6 @@
 namespace perspective {
 
 // `default_scene` says in --help what runs without --model.
-void add_view_options(CLI::App& app, ViewOptions& view, const std::string& default_scene);
+void add_view_options(rl::CommandLine& app, ViewOptions& view, const std::string& default_scene);
 
 }  // namespace perspective

@@ -9,7 +9,7 @@
 #include "scene.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 06, shading: models lit by flat, Gouraud, Phong or Blinn-Phong shading, in "
         "linear light, through lesson 05's camera."};
     rl::ImageOptions image_options{"06_shading.tga"};
@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
                  "Light the sRGB bytes as if they were linear and write the result as it is "
                  "(what lessons 00-05 did)");
     app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

@@ -9,14 +9,14 @@
 #include "rasterlab/main_guard.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 07, normal mapping: models with their diffuse, normal and specular maps, lit "
         "per pixel in linear light through lesson 05's camera."};
     rl::ImageOptions image_options{"07_normal_mapping.tga"};
     normal_mapping::MappedCli cli;
     normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
     rl::add_image_options(app, image_options);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

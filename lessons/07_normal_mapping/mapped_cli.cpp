@@ -4,7 +4,7 @@
 
 namespace normal_mapping {
 
-void add_mapped_options(CLI::App& app, MappedCli& cli, const std::string& default_scene) {
+void add_mapped_options(rl::CommandLine& app, MappedCli& cli, const std::string& default_scene) {
     perspective::add_view_options(app, cli.view, default_scene);
     rl::add_method_option(app, "--normal-map", cli.options.normal_map, kNormalMaps,
                           "Normal map to use");

@@ -6,7 +6,7 @@
 //
 //   normal_mapping::MappedCli cli;
 //   normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
-//   CLI11_PARSE(app, argc, argv);
+//   if (const auto exit = app.parse(argc, argv)) return *exit;
 //   const normal_mapping::MappedScene scene = normal_mapping::load_scene(cli, 800, 600, "07");
 #pragma once
 
@@ -20,7 +20,7 @@ namespace normal_mapping {
 
 using MappedCli = MappedView;  // (scene.hpp)
 
-void add_mapped_options(CLI::App& app, MappedCli& cli, const std::string& default_scene);
+void add_mapped_options(rl::CommandLine& app, MappedCli& cli, const std::string& default_scene);
 
 using MappedScene = perspective::ViewedScene<MappedModel>;
 

@@ -12,7 +12,7 @@
 #include "scene.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 08, shadows: lesson 07's render with shadows from a shadow map, of a directional "
         "or a spot light."};
     rl::ImageOptions image_options{"08_shadows.tga"};
@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
                    "Spot light: where it is, x y z (default: along --light, outside the scene)")
         ->expected(3)
         ->check(rl::finite_number());
-    CLI::Option* cone =
+    rl::Option* cone =
         app.add_option("--cone", options.light.cone_degrees,
                        "Spot light: the cone's full opening angle, degrees (1 to 170)")
             ->capture_default_str()
@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
                           "Texture filter, for every map (lesson 04)");
     bool one_light = false;
     app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

@@ -16,7 +16,7 @@
 #include "tone_map.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 09, environment: mirrors, glass, rough metal and plastic lit by a sky, a studio or "
         "an .hdr file, as a cube or a lat-long map, with the sky behind them, tone mapped."};
     rl::ImageOptions image_options{"09_environment.tga"};
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     rl::add_method_option(app, "--map", env_options.layout, environment::kLayouts,
                           "How the environment is stored");
-    CLI::Option* map_size =
+    rl::Option* map_size =
         app.add_option("--map-size", env_options.size,
                        "A cube face's side, or a lat-long map's height, in texels (1 to " +
                            std::to_string(environment::kMaxMapSize) + ")")
@@ -44,60 +44,60 @@ int main(int argc, char** argv) {
                           "How the map is read between texels");
     std::vector<float> metal;
     environment::Material material = environment::Material::mirror;
-    CLI::Option* material_option =
+    rl::Option* material_option =
         rl::add_method_option(app, "--material", material, environment::kMaterials,
                               "What every model is made of")
             ->default_str("the first model mirror, the others rough-metal");
-    CLI::Option* roughness =
+    rl::Option* roughness =
         app.add_option("--roughness", options.roughness,
                        "How rough rough-metal and plastic are: 0 (a mirror) to 1")
             ->capture_default_str()
             ->check(rl::finite_number(0, 1));
-    CLI::Option* metal_option =
+    rl::Option* metal_option =
         app.add_option(
                "--metal", metal,
                "The rough metal's head-on reflectance, R G B from 0 to 1 (gold: 1 0.71 0.29; "
                "white, 1 1 1, for the white furnace)")
             ->expected(3)
             ->check(rl::finite_number(0, 1));
-    CLI::Option* glossy =
+    rl::Option* glossy =
         rl::add_method_option(app, "--glossy", options.glossy, environment::kGlossies,
                               "How rough-metal and plastic gather the light they reflect");
-    CLI::Option* lookup = rl::add_method_option(
+    rl::Option* lookup = rl::add_method_option(
         app, "--lookup", options.lookup, environment::kLookups,
         "Where the split sum reads its blurred maps: along the mirror direction, "
         "or leaning towards the normal as a rough lobe does");
     bool single_scatter = false;
-    CLI::Option* single =
+    rl::Option* single =
         app.add_flag("--single-scatter", single_scatter,
                      "Leave out the light that bounces between a rough surface's facets (the "
                      "microfacet BRDF's lost energy)");
-    CLI::Option* glossy_levels =
+    rl::Option* glossy_levels =
         app.add_option("--glossy-levels", options.prefilter.levels,
                        "Roughness steps of the split sum's blurred maps (2 to " +
                            std::to_string(environment::kMaxGlossyLevels) + ")")
             ->capture_default_str()
-            ->check(CLI::Range(2, environment::kMaxGlossyLevels));
-    CLI::Option* glossy_size = app.add_option("--glossy-size", options.prefilter.size,
-                                              "The largest blurred map's face, in texels (8 to " +
-                                                  std::to_string(environment::kMaxGlossySize) + ")")
-                                   ->capture_default_str()
-                                   ->check(CLI::Range(8, environment::kMaxGlossySize));
-    CLI::Option* glossy_samples =
+            ->check(rl::range(2, environment::kMaxGlossyLevels));
+    rl::Option* glossy_size = app.add_option("--glossy-size", options.prefilter.size,
+                                             "The largest blurred map's face, in texels (8 to " +
+                                                 std::to_string(environment::kMaxGlossySize) + ")")
+                                  ->capture_default_str()
+                                  ->check(rl::range(8, environment::kMaxGlossySize));
+    rl::Option* glossy_samples =
         app.add_option("--glossy-samples", options.prefilter.samples,
                        "GGX rays per texel of the blurred maps (1 to " +
                            std::to_string(environment::kMaxGlossySamples) + ")")
             ->capture_default_str()
-            ->check(CLI::Range(1, environment::kMaxGlossySamples));
-    CLI::Option* irradiance =
+            ->check(rl::range(1, environment::kMaxGlossySamples));
+    rl::Option* irradiance =
         rl::add_method_option(app, "--irradiance", options.irradiance, environment::kIrradiances,
                               "How a diffuse surface finds the light arriving from its hemisphere");
-    CLI::Option* samples =
+    rl::Option* samples =
         app.add_option("--samples", options.samples,
                        "Monte Carlo's rays per pixel (--irradiance or --glossy monte-carlo; 1 to " +
                            std::to_string(environment::kMaxIrradianceSamples) + ")")
             ->capture_default_str()
-            ->check(CLI::Range(1, environment::kMaxIrradianceSamples));
+            ->check(rl::range(1, environment::kMaxIrradianceSamples));
     rl::add_method_option(app, "--tone-map", exposure.curve, environment::kToneMaps,
                           "How light above 1 is brought into the image");
     app.add_option("--exposure", exposure.stops, "Exposure in stops: the light times 2^stops")
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
                    "the blurred maps) as Radiance .hdr files into this existing folder");
     bool no_skybox = false;
     app.add_flag("--no-skybox", no_skybox, "Leave the background black instead of the sky");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

@@ -12,7 +12,7 @@
 #include "scene.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 10, ambient occlusion: lesson 08's scene into a G-buffer, then screen-space "
         "ambient occlusion darkening the ambient light."};
     rl::ImageOptions image_options{"10_ambient_occlusion.tga"};
@@ -23,27 +23,26 @@ int main(int argc, char** argv) {
     view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
     perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
-    CLI::Option* ao_option = rl::add_method_option(
+    rl::Option* ao_option = rl::add_method_option(
         app, "--ao", options.ao.method, occlusion::kAoMethods, "How the occlusion is found");
-    CLI::Option* samples = app.add_option("--samples", options.ao.samples,
-                                          "Depth-buffer reads a pixel (1 to " +
-                                              std::to_string(occlusion::kMaxAoSamples) +
-                                              "; horizon: 8 per slice; baked: rays a vertex)")
-                               ->capture_default_str()
-                               ->check(CLI::Range(1, occlusion::kMaxAoSamples));
-    CLI::Option* radius_option =
+    rl::Option* samples = app.add_option("--samples", options.ao.samples,
+                                         "Depth-buffer reads a pixel (1 to " +
+                                             std::to_string(occlusion::kMaxAoSamples) +
+                                             "; horizon: 8 per slice; baked: rays a vertex)")
+                              ->capture_default_str()
+                              ->check(rl::range(1, occlusion::kMaxAoSamples));
+    rl::Option* radius_option =
         app.add_option("--radius", options.ao.radius,
                        "How far an occluder may be, in world units (the floor is 3.4 wide)")
             ->capture_default_str()
             ->check(rl::finite_number(1e-4, 1e4));
-    CLI::Option* blur =
-        app.add_option("--blur", options.ao.blur,
-                       "The blur's half width in pixels, within one surface (0 to " +
-                           std::to_string(occlusion::kMaxBlurRadius) + "; 0: none)")
-            ->capture_default_str()
-            ->check(CLI::Range(0, occlusion::kMaxBlurRadius));
+    rl::Option* blur = app.add_option("--blur", options.ao.blur,
+                                      "The blur's half width in pixels, within one surface (0 to " +
+                                          std::to_string(occlusion::kMaxBlurRadius) + "; 0: none)")
+                           ->capture_default_str()
+                           ->check(rl::range(0, occlusion::kMaxBlurRadius));
     bool no_rotation = false;
-    CLI::Option* no_rotation_flag =
+    rl::Option* no_rotation_flag =
         app.add_flag("--no-rotation", no_rotation,
                      "The same kernel at every pixel, not turned by the 4x4 noise");
     rl::add_method_option(
@@ -59,7 +58,7 @@ int main(int argc, char** argv) {
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
                           "Tangent frames of the --model files (lesson 07)");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

@@ -11,7 +11,7 @@
 #include "scene.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 11, antialiasing: lesson 08's scene with several samples a pixel, supersampled or "
         "multisampled, resolved in linear light."};
     rl::ImageOptions image_options{"11_antialiasing.tga"};
@@ -25,20 +25,20 @@ int main(int argc, char** argv) {
     rl::add_method_option(app, "--aa", options.method, antialiasing::kMethods,
                           "How a pixel is sampled: once, supersampled, multisampled, or once and "
                           "then the edge filter");
-    CLI::Option* samples =
+    rl::Option* samples =
         app.add_option("--samples", options.samples,
                        "Samples a pixel for ssaa and msaa: 2, 4, 8 or 16 (as the pattern has them)")
             ->capture_default_str()
-            ->check(CLI::IsMember({1, 2, 4, 8, 16}));
-    CLI::Option* pattern = rl::add_method_option(
+            ->check(rl::one_of({1, 2, 4, 8, 16}));
+    rl::Option* pattern = rl::add_method_option(
         app, "--pattern", options.pattern, antialiasing::kPatterns,
         "Where a pixel's samples lie: an ordered grid (4, 16), a rotated grid "
         "(4) or Direct3D's standard patterns (2, 4, 8, 16)");
-    CLI::Option* resolve =
+    rl::Option* resolve =
         rl::add_method_option(app, "--resolve", options.resolve, antialiasing::kResolves,
                               "How samples become a pixel: their mean (box), or a tent over the "
                               "pixel and its neighbours");
-    CLI::Option* shade_at =
+    rl::Option* shade_at =
         rl::add_method_option(app, "--shade-at", options.shade_at, antialiasing::kShadeAts,
                               "msaa: where the fragment stage runs in a pixel");
     rl::add_method_option(app, "--tone-map", options.tone, antialiasing::kToneOrders,
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
                           "Tangent frames of the --model files (lesson 07)");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

@@ -20,7 +20,7 @@
 #include "renderer.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 12, the fast path: lesson 07's image from a tiled, multi-threaded SIMD "
         "renderer, timed over frames of an orbiting camera (and against Mesa's llvmpipe)."};
     rl::ImageOptions image_options{"12_fast.tga"};
@@ -35,20 +35,20 @@ int main(int argc, char** argv) {
                    "view the camera options give, and is written (1 to 1000: each frame "
                    "sets up every triangle again, whatever the image size)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
+        ->check(rl::range(1, 1000));
     app.add_option("--threads", options.threads, "Threads (0: one per core, up to 256)")
         ->capture_default_str()
-        ->check(CLI::Range(0, 256));
+        ->check(rl::range(0, 256));
     app.add_option("--tile-size", options.tile_size,
                    "Tile side in pixels (8 to 1024, a multiple of 8)")
         ->capture_default_str()
-        ->check(CLI::Range(8, 1024));
-    CLI::Option* no_peer =
+        ->check(rl::range(8, 1024));
+    rl::Option* no_peer =
         app.add_flag("!--no-peer", peer, "Do not time Mesa's llvmpipe on the same frames");
     std::string peer_output;
     app.add_option("--peer-output", peer_output, "Also write llvmpipe's last frame here")
         ->excludes(no_peer);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const std::string& output = image_options.output;
     const int width = image_options.width, height = image_options.height;
 

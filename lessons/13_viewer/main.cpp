@@ -20,7 +20,7 @@
 #include "sdl_window.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 13, the viewer: lesson 12's fast path (with lesson 08's shadows, or lesson 07's "
         "renderer) live in a window; orbit, switch methods and watch the frame time."};
     app.footer(viewer::key_help());
@@ -36,18 +36,18 @@ int main(int argc, char** argv) {
     // 8192 a side is past the largest displays (8K is 7680 x 4320).
     app.add_option("--width", window.width, "Window width in pixels (1 to 8192)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 8192));
+        ->check(rl::range(1, 8192));
     app.add_option("--height", window.height, "Window height in pixels (1 to 8192)")
         ->capture_default_str()
-        ->check(CLI::Range(1, 8192));
+        ->check(rl::range(1, 8192));
     int frames = 0;  // 0: until the window is closed
     app.add_option("--frames", frames,
                    "Render this many frames along lesson 12's orbit (the last is the view the "
                    "camera options give), then stop (1 to 1000; without it, run until the "
                    "window is closed)")
-        ->check(CLI::Range(1, 1000));
+        ->check(rl::range(1, 1000));
     std::string screenshot;
-    CLI::Option* screenshot_option =
+    rl::Option* screenshot_option =
         app.add_option("-o,--screenshot", screenshot,
                        "Write the last frame, read back from the window, here (.tga or .png); "
                        "without --frames, after one frame");
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     app.add_flag("--vsync", vsync,
                  "Wait for the display's refresh (the frame time is then not "
                  "the renderer's)");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     const int width = window.width, height = window.height;
 
     return rl::guarded_main("13_viewer", [&] {

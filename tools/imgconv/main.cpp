@@ -1,12 +1,12 @@
 // imgconv: converts an image between the formats rasterlab reads and writes,
 // e.g. a lesson's TGA output to the PNG that its doc page shows.
-#include <CLI/CLI.hpp>
+#include "rasterlab/cli.hpp"
 
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Convert an image: reads TGA/PNG/JPG/BMP, writes .tga (RLE) or .png by extension."};
     std::string input, output;
     bool keep_alpha = false, flip = false;
@@ -18,13 +18,13 @@ int main(int argc, char** argv) {
     app.add_option("--scale", scale,
                    "Enlarge by this whole factor, each pixel a square block "
                    "(for close-ups in the docs)")
-        ->check(CLI::Range(1, 64));
+        ->check(rl::range(1, 64));
     app.add_flag("--flip", flip,
                  "Turn the image upside down (its rows in the opposite order): what a window "
                  "shows when a bottom-row-first frame is sent as it is");
     app.add_option("--crop", crop, "Keep only the rectangle X Y W H (X, Y: its bottom-left pixel)")
         ->expected(4);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("imgconv", [&] {
         rl::Image image = rl::load_image(input);
         if (!crop.empty()) {

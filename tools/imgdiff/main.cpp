@@ -10,7 +10,7 @@
 #include "rasterlab/main_guard.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Compare two images (TGA, PNG, JPG): prints the largest channel difference, "
         "the share of differing pixels and the PSNR; fails when a tolerance is exceeded."};
     std::string expected_path, actual_path, diff_path;
@@ -20,11 +20,11 @@ int main(int argc, char** argv) {
     app.add_option("actual", actual_path, "Image to check")->required();
     app.add_option("--max-abs", max_abs, "Largest channel difference allowed (0..255)")
         ->capture_default_str()
-        ->check(CLI::Range(0, 255));
+        ->check(rl::range(0, 255));
     app.add_option("--threshold", threshold,
                    "A pixel differs when its largest channel difference exceeds this")
         ->capture_default_str()
-        ->check(CLI::Range(0, 255));
+        ->check(rl::range(0, 255));
     app.add_option("--max-share", max_share, "Share of differing pixels allowed (0..1)")
         ->capture_default_str()
         ->check(rl::finite_number(0.0, 1.0));  // CLI::Range lets NaN through
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     app.add_option("--overlay", overlay_path,
                    "Always write ACTUAL dimmed, with the pixels that differ by more than "
                    "--threshold painted magenta (for the docs' failure pictures)");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
 
     return rl::guarded_main(
         "imgdiff",

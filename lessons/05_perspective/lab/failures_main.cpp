@@ -36,7 +36,7 @@ const char* name(SceneName value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 05's failure pictures: the lab's clipping scenes, each pixel coloured by the "
         "triangle that covers it."};
     rl::ImageOptions image_options{"05_failures.tga"};
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
                           "The lab's clipping scene");
     rl::add_method_option(app, "--clip", options.clip, perspective::kClipModes, "Clipping");
     app.add_flag("--truth", truth, "The lab's ray-cast truth instead of the pipeline");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("05_failures", [&] {
         rl::check_image_output(image_options.output);
         const perspective::ClippingScene s = scene == SceneName::around_eye

@@ -51,7 +51,7 @@ const char* name(Mistake value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 06's failure pictures: a plain sphere lit by one light, correctly or with the "
         "unclamped pow of the specular term."};
     rl::ImageOptions image_options{"06_failures.tga"};
@@ -70,9 +70,9 @@ int main(int argc, char** argv) {
         ->check(rl::finite_number(0, 1e6));
     app.add_option("--segments", segments, "Segments around the UV sphere")
         ->capture_default_str()
-        ->check(CLI::Range(3, 1024));
+        ->check(rl::range(3, 1024));
     rl::add_light_option(app, light);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("06_failures", [&] {
         rl::check_image_output(image_options.output);
         rl::check_direction("--light", light);

@@ -58,7 +58,7 @@ textures::MipChain green_flipped(const textures::MipChain& map) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 07's failure pictures: the lesson's render with one mistake, or on a surface "
         "that shows a weak tangent method's failure."};
     rl::ImageOptions image_options{"07_failures.tga"};
@@ -75,12 +75,12 @@ int main(int argc, char** argv) {
     rl::add_method_option(app, "--tangents", tangents, kTangentMethods, "Tangent frames");
     app.add_option("--segments", segments, "Segments around the low-poly globe")
         ->capture_default_str()
-        ->check(CLI::Range(3, 1024));
+        ->check(rl::range(3, 1024));
     app.add_option("--eye", eye, "Camera position (default: the scene's own), x y z")
         ->expected(3)
         ->check(rl::finite_number());
     rl::add_light_option(app, light);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("07_failures", [&] {
         rl::check_image_output(image_options.output);
         std::vector<std::string> warnings;

@@ -13,13 +13,13 @@
 #include "tinyrenderer_port.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "The lab's port of tinyrenderer's renderer: one OBJ, its diffuse and normal maps."};
     rl::ImageOptions image_options{"tinyrenderer_port.tga"};
     perspective::ViewOptions view;
     perspective::add_view_options(app, view, "the globe from obj/");
     rl::add_image_options(app, image_options);
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("07_tinyrenderer_port", [&] {
         rl::check_image_output(image_options.output);
         if (view.models.size() > 1) throw std::invalid_argument("--model: one model only");

@@ -6,7 +6,7 @@
 //
 //   11_text_sign -o DIR/sign_diffuse.tga    then: 11_antialiasing --model DIR/sign.obj ...
 #include <stb_easy_font.h>
-#include <CLI/CLI.hpp>
+#include "rasterlab/cli.hpp"
 
 #include <algorithm>
 #include <array>
@@ -67,15 +67,16 @@ std::vector<std::uint8_t> bytes_of(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 11's sign of small text, for the picture of the edge filter on text: writes "
         "its texture (-o) and, beside it, sign.obj and sign.mtl"};
-    std::filesystem::path texture = "sign_diffuse.tga";
-    app.add_option("-o,--output", texture,
+    std::string texture_name = "sign_diffuse.tga";
+    app.add_option("-o,--output", texture_name,
                    "The sign's texture (.tga or .png); sign.obj and sign.mtl go in its folder")
         ->capture_default_str();
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("11_text_sign", [&] {
+        const std::filesystem::path texture = texture_name;
         rl::check_image_output(texture);
         const std::filesystem::path folder = texture.parent_path();
         const float half_width = 0.005f * kTexWidth, height = 0.01f * kTexHeight;

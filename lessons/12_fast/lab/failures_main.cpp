@@ -18,7 +18,7 @@
 #include "rasterlab/main_guard.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{
+    rl::CommandLine app{
         "Lesson 12's failure pictures: a fan of triangles through the fast path's tile kernels, "
         "with one mistake of the tile loop made on purpose."};
     std::string output = "12_failures.tga";
@@ -27,16 +27,16 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", output, "Image to write (.tga or .png)")->capture_default_str();
     app.add_option("--size", size, "Image width and height in pixels (8 to 1024)")
         ->capture_default_str()
-        ->check(CLI::Range(8, 1024));
+        ->check(rl::range(8, 1024));
     app.add_option("--slices", slices, "Triangles in the fan (3 to 360)")
         ->capture_default_str()
-        ->check(CLI::Range(3, 360));
+        ->check(rl::range(3, 360));
     app.add_option("--tile-size", tile_size, "Tile side in pixels (8 to 1024, a multiple of 8)")
         ->capture_default_str()
-        ->check(CLI::Range(8, 1024));
+        ->check(rl::range(8, 1024));
     rl::add_method_option(app, "--mistake", mistake, fast::kCoverageMistakes,
                           "The mistake to make");
-    CLI11_PARSE(app, argc, argv);
+    if (const auto exit = app.parse(argc, argv)) return *exit;
     return rl::guarded_main("12_failures", [&] {
         rl::check_image_output(output);
         if (tile_size % fast::kBlock != 0)
