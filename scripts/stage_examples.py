@@ -203,8 +203,8 @@ def problems(root):
 def selftest(root):
     """Three stale examples, each in a copy of the sources, each caught."""
     breakages = [
-        ("lessons/05_perspective/render_target.hpp", "perspective::resolve(",
-         "perspective::resolve_samples(", "resolve_samples"),
+        ("lessons/11_antialiasing/coverage.hpp", "antialiasing::resolve(",
+         "antialiasing::resolve_samples(", "resolve_samples"),
         ("lessons/04_textures/sampling.hpp", "{du_dx, du_dy}, {textures::Filter::trilinear})",
          "{du_dx, du_dy})", "with 3 arguments"),
         ("lessons/06_shading/shaders.hpp", "shading::Uniforms u;", "shading::uniforms u;",

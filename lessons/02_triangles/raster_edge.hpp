@@ -10,7 +10,9 @@
 //   const rl::vec3 b = triangles::EdgeWeights(t).at(x, y);  // the same weights at one pixel
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <utility>
 
 #include "screen_triangle.hpp"
@@ -116,31 +118,55 @@ bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
 }
 // [/doc:raster-edge]
 
-// The weights rasterize_edge hands over at pixel (x, y), computed directly
-// (the same integers as its incremental steps, so the same floats): for a
-// caller that needs them at pixels the rasterizer reached another way, as
-// lesson 05's pipeline does at pixel centres when it rasterized samples.
-// The triangle's setup is done once, on construction.
+// The weights rasterize_edge hands over at pixel (x, y), and whether it
+// covers that pixel, computed directly (the same integers as its
+// incremental steps, so the same floats and the same fill rule): for a
+// caller that asks about one pixel at a time, as lesson 11's multisampling
+// asks about each sample of a pixel in turn. The triangle's setup is done
+// once, on construction.
 class EdgeWeights {
   public:
+    EdgeWeights() = default;  // covers nothing
     // (A triangle the rasterizer refuses gets no setup: its products could overflow.)
     explicit EdgeWeights(const ScreenTriangle& t)
         : f_(within_raster_range(t) ? fixed_triangle(t) : FixedTriangle{}),
-          inverse_area_(f_.area != 0 ? 1.0f / static_cast<float>(f_.area) : 0.0f) {}
+          inverse_area_(f_.area != 0 ? 1.0f / static_cast<float>(f_.area) : 0.0f) {
+        for (int k = 0; k < 3; ++k)
+            bias_[k] = is_top_left(f_.v[(k + 1) % 3], f_.v[(k + 2) % 3]) ? 0 : -1;
+    }
     rl::vec3 at(int x, int y) const {
-        const FixedPoint p{x * kSubpixels + kSubpixels / 2, y * kSubpixels + kSubpixels / 2};
-        float weight[3];
-        for (int k = 0; k < 3; ++k) {
-            const FixedPoint a = f_.v[(k + 1) % 3], b = f_.v[(k + 2) % 3];
-            weight[k] = static_cast<float>((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) *
-                        inverse_area_;
-        }
-        return f_.in_input_order(weight[0], weight[1], weight[2]);
+        const Edges e = edges(x, y);
+        return weights(e);
+    }
+    // The weights at (x, y) if rasterize_edge covers it, else nothing.
+    std::optional<rl::vec3> covered(int x, int y) const {
+        if (f_.area == 0) return std::nullopt;
+        const Edges e = edges(x, y);
+        for (int k = 0; k < 3; ++k)
+            if (e[k] + bias_[k] < 0) return std::nullopt;  // on an edge: in only if top-left
+        return weights(e);
     }
 
   private:
-    FixedTriangle f_;
-    float inverse_area_;
+    using Edges = std::array<std::int64_t, 3>;  // E_k at the pixel's centre
+    Edges edges(int x, int y) const {
+        const FixedPoint p{x * kSubpixels + kSubpixels / 2, y * kSubpixels + kSubpixels / 2};
+        Edges e;
+        for (int k = 0; k < 3; ++k) {
+            const FixedPoint a = f_.v[(k + 1) % 3], b = f_.v[(k + 2) % 3];
+            e[k] = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+        }
+        return e;
+    }
+    rl::vec3 weights(const Edges& e) const {
+        return f_.in_input_order(static_cast<float>(e[0]) * inverse_area_,
+                                 static_cast<float>(e[1]) * inverse_area_,
+                                 static_cast<float>(e[2]) * inverse_area_);
+    }
+
+    FixedTriangle f_{};
+    float inverse_area_ = 0;
+    Edges bias_{};
 };
 
 // The whole image: {0, 0, width, height}.

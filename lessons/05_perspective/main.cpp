@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
             "%zu outside, %zu triangles drawn, %zu refused, %zu fragments shaded; eye (%g, %g, "
             "%g), near %g, far %g; %s interpolation, %s clipping, into %s\n",
             models.size(), counts.objects_culled, counts.faces, counts.culled, counts.clipped,
-            counts.outside, counts.drawn, counts.refused, counts.fragments,
+            counts.outside, counts.drawn, counts.refused, counts.shaded,
             static_cast<double>(camera.eye.x), static_cast<double>(camera.eye.y),
             static_cast<double>(camera.eye.z), static_cast<double>(camera.near),
             static_cast<double>(camera.far), perspective::name(options.pipeline.interpolation),

@@ -13,7 +13,8 @@ PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
     drawn += o.drawn;
     refused += o.refused;
     visited += o.visited;
-    fragments += o.fragments;
+    shaded += o.shaded;
+    stored += o.stored;
     return *this;
 }
 

@@ -41,6 +41,7 @@
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <variant>
 
 #include "02_triangles/bands.hpp"
 #include "02_triangles/raster.hpp"
@@ -103,8 +104,9 @@ struct PipelineCounts {
     std::size_t drawn = 0;    // triangles rasterized (a clipped face may give several)
     std::size_t refused = 0;  // refused by the rasterizer (beyond 2^22 pixels, NaN)
     std::size_t visited = 0;  // samples of the triangles' boxes the rasterizer tested
-    std::size_t fragments = 0;  // stored: passed the depth test, not discarded (one per
-                                // pixel; per sample under a policy of several)
+    std::size_t shaded = 0;   // runs of the fragment stage (once per stored pixel, but where
+                              // the program discards; once per pixel under multisampling)
+    std::size_t stored = 0;   // samples that passed the depth test and were not discarded
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
 
@@ -351,26 +353,50 @@ float window_depth(const TriangleSetup<V, F>& t, rl::vec3 b, float bias) {
 }
 
 // [doc:fragment-operations]
-// One covered sample of triangle t, at window depth z, stored at (column, y)
-// of the target: the depth test, the fragment stage (its varyings at weights
-// b, pixel (x, y)) and the store of its outputs and depth. The test runs
-// before the fragment stage, as a GPU's early depth test does; a fragment the
-// program discards writes neither colour nor depth. Returns whether it was stored.
-template <class P, Interpolable V, class F, class... Pixels>
-bool fragment_operations(const P& program, const TriangleSetup<V, F>& t, int x, int y, float z,
-                         rl::vec3 b, RenderTarget<Pixels...>& target, int column) {
+// The fragment operations of one covered sample, in the halves every
+// coverage policy calls: the sample's test, before the fragment stage (as a
+// GPU's early depth test), and its write. In between, the fragment stage,
+// whose outputs are nothing where the program discards: such a fragment
+// writes neither colour nor depth.
+template <class... Pixels>
+bool sample_passes(const RenderTarget<Pixels...>& target, int column, int y, float z) {
+    const rl::FloatImage* const depth = target.depth();
+    return !depth || zbuffer::depth_passes(target.depth_state.compare, z, depth->at(column, y));
+}
+
+template <class Outputs, class... Pixels>
+void write_sample(RenderTarget<Pixels...>& target, int column, int y, float z, const Outputs& out) {
+    if constexpr (sizeof...(Pixels) > 0) store(target, column, y, out);
     rl::FloatImage* const depth = target.depth();
-    const zbuffer::DepthState& state = target.depth_state;
-    if (depth && !zbuffer::depth_passes(state.compare, z, depth->at(column, y))) return false;
-    if constexpr (ProgramTraits<P>::may_discard) {
-        const auto kept = program.fragment(fragment_at(t, x, y, z, b));
-        if (!kept) return false;
-        if constexpr (sizeof...(Pixels) > 0) store(target, column, y, *kept);
-    } else if constexpr (sizeof...(Pixels) > 0) {
-        store(target, column, y, program.fragment(fragment_at(t, x, y, z, b)));
+    if (depth && target.depth_state.write) depth->at(column, y) = z;
+}
+
+template <class P, Interpolable V, class F, class... Pixels>
+auto shade(const P& program, const Fragment<V, F>& fragment, const RenderTarget<Pixels...>&,
+           PipelineCounts& counts) {
+    if constexpr (!ProgramTraits<P>::may_discard && sizeof...(Pixels) == 0) {
+        return std::optional<std::monostate>(std::in_place);  // depth only: nothing to run
+    } else {
+        ++counts.shaded;
+        if constexpr (ProgramTraits<P>::may_discard)
+            return program.fragment(fragment);  // an optional
+        else
+            return std::optional(program.fragment(fragment));
     }
-    if (depth && state.write) depth->at(column, y) = z;
-    return true;
+}
+
+// One sample of triangle t at window depth z, stored at (column, y) of the
+// target: its test, the fragment stage (its varyings at weights b, pixel
+// (x, y)), its write; counted in `counts`.
+template <class P, Interpolable V, class F, class... Pixels>
+void fragment_operations(const P& program, const TriangleSetup<V, F>& t, int x, int y, float z,
+                         rl::vec3 b, RenderTarget<Pixels...>& target, int column,
+                         PipelineCounts& counts) {
+    if (!sample_passes(target, column, y, z)) return;
+    const auto out = shade(program, fragment_at(t, x, y, z, b), target, counts);
+    if (!out) return;
+    write_sample(target, column, y, z, *out);
+    ++counts.stored;
 }
 // [/doc:fragment-operations]
 
@@ -387,7 +413,7 @@ bool rasterize_triangle(const TriangleSetup<V, F>& t, const P& program,
     counts.visited += box_samples(t.screen(), rect);
     return triangles::rasterize(options.raster, t.screen(), rect, [&](int x, int y, rl::vec3 b) {
         const float z = window_depth(t, b, bias);
-        if (fragment_operations(program, t, x, y, z, b, target, x)) ++counts.fragments;
+        fragment_operations(program, t, x, y, z, b, target, x, counts);
     });
 }
 // [/doc:rasterize-triangle]

@@ -2,25 +2,21 @@
 // of colour attachments, each an image of its own pixel type (8-bit
 // rl::Rgba, float, linear rl::vec3 HDR, normals, ids ...), and an optional
 // depth attachment with its state (lesson 03's compare, write, clear, bias).
-// A target may hold several samples per pixel, which a coverage policy
-// other than lesson 05's fills (pipeline.hpp); resolve() averages them into
-// one image per attachment. A target with no colour attachment is a
-// depth-only pass (how a shadow map is rendered).
+// A target may store several samples per pixel, side by side, for a
+// coverage policy other than lesson 05's to fill (pipeline.hpp): where they
+// lie, how many a pattern has and how they become one pixel (the resolve)
+// are lesson 11's. A target with no colour attachment is a depth-only pass
+// (how a shadow map is rendered).
 //
 //   perspective::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600);
 //   perspective::draw(geometry, program, frame);   // fragment() returns {rgba, normal}
 //   perspective::RenderTarget<> shadow_map(1024, 1024);  // depth only
-//   perspective::TargetOptions four;  four.samples = 4;
-//   perspective::ColourTarget smooth(800, 600, four, rl::kBackground);
-//   perspective::draw(geometry, program, smooth, {}, four_samples);  // a policy of 4 samples
-//   const rl::Image picture = perspective::resolve(smooth.colour(), smooth.samples());
+//   perspective::RenderTarget<rl::vec3> samples(800, 600, {.samples = 4}, rl::vec3{});
+//   perspective::draw(geometry, program, samples, {}, multisampling);  // lesson 11's policy
 #pragma once
 
 #include <algorithm>
-#include <array>
-#include <bit>
-#include <cmath>
-#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -34,12 +30,8 @@
 
 namespace perspective {
 
-inline bool valid_sample_count(int samples) {
-    return samples == 1 || samples == 2 || samples == 4 || samples == 8 || samples == 16;
-}
-
 struct TargetOptions {
-    int samples = 1;  // per pixel: 1, 2, 4, 8 or 16
+    int samples = 1;  // per pixel, at least 1 (with the width, at most an int's range of columns)
     bool has_depth = true;
     zbuffer::DepthState depth;
 };
@@ -53,9 +45,10 @@ class RenderTarget {
     explicit RenderTarget(int width, int height, const TargetOptions& options = {},
                           Pixels... clear_values)
         : depth_state(options.depth), width_(width), height_(height), samples_(options.samples) {
-        if (!valid_sample_count(samples_))
-            throw std::invalid_argument("samples per pixel must be 1, 2, 4, 8 or 16, not " +
-                                        std::to_string(samples_));
+        if (samples_ < 1 || width > std::numeric_limits<int>::max() / samples_)
+            throw std::invalid_argument("a target of " + std::to_string(width) +
+                                        " pixels a row cannot hold " + std::to_string(samples_) +
+                                        " samples a pixel");
         colour_ = {rl::Grid<Pixels>(width * samples_, height, clear_values)...};
         if (options.has_depth)
             depth_ = rl::FloatImage(width * samples_, height, options.depth.clear);
@@ -110,45 +103,6 @@ inline std::vector<triangles::PixelRect> tiles(int width, int height, int size) 
     for (int y = 0; y < height; y += size)
         for (int x = 0; x < width; x += size)
             out.push_back({x, y, std::min(x + size, width), std::min(y + size, height)});
-    return out;
-}
-
-// The mean of a pixel's samples: bytes rounded to nearest, anything made of
-// floats averaged in double (so that equal samples give back exactly their
-// value).
-template <class Pixel>
-Pixel average(const Pixel* samples, int count) {
-    if constexpr (std::is_same_v<Pixel, rl::Rgba>) {
-        int sum[4] = {0, 0, 0, 0};
-        for (int s = 0; s < count; ++s) {
-            sum[0] += samples[s].r, sum[1] += samples[s].g;
-            sum[2] += samples[s].b, sum[3] += samples[s].a;
-        }
-        const auto mean = [count](int v) {
-            return static_cast<std::uint8_t>((v + count / 2) / count);
-        };
-        return {mean(sum[0]), mean(sum[1]), mean(sum[2]), mean(sum[3])};
-    } else {
-        static_assert(Interpolable<Pixel> && !std::is_integral_v<Pixel>,
-                      "resolve averages bytes or types made of floats (ids cannot be averaged)");
-        std::array<double, sizeof(Pixel) / sizeof(float)> sum{};
-        for (int s = 0; s < count; ++s) {
-            const Lanes<Pixel> lanes = std::bit_cast<Lanes<Pixel>>(samples[s]);
-            for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += lanes[i];
-        }
-        Lanes<Pixel> mean;
-        for (std::size_t i = 0; i < sum.size(); ++i) mean[i] = static_cast<float>(sum[i] / count);
-        return std::bit_cast<Pixel>(mean);
-    }
-}
-
-// One image of width x height from an attachment of `samples` per pixel.
-template <class Pixel>
-rl::Grid<Pixel> resolve(const rl::Grid<Pixel>& attachment, int samples) {
-    rl::Grid<Pixel> out(attachment.width() / samples, attachment.height());
-    for (int y = 0; y < out.height(); ++y)
-        for (int x = 0; x < out.width(); ++x)
-            out.at(x, y) = average(&attachment.at(x * samples, y), samples);
     return out;
 }
 

@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
         std::printf(
             "%zu models: %zu faces, %zu back faces, %zu clipped, %zu fragments shaded; %s "
             "shading, %s output, %zu corner normals computed (%s-weighted); into %s\n",
-            models.size(), counts.faces, counts.culled, counts.clipped, counts.fragments,
+            models.size(), counts.faces, counts.culled, counts.clipped, counts.shaded,
             shading::name(options.model), shading::name(options.output), computed,
             shading::name(weighting), output.c_str());
         return 0;

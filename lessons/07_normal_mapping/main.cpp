@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
         std::printf(
             "%zu models: %zu faces, %zu back faces, %zu fragments shaded in %.1f ms (rendering "
             "only); %s normal map, %s tangents; into %s\n",
-            models.size(), counts.faces, counts.culled, counts.fragments, took.count(),
+            models.size(), counts.faces, counts.culled, counts.shaded, took.count(),
             normal_mapping::name(options.normal_map), normal_mapping::name(cli.tangents),
             output.c_str());
         return 0;

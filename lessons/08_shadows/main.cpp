@@ -107,7 +107,7 @@ int main(int argc, char** argv) {
         std::printf(
             "%zu models: %zu faces, %zu fragments shaded; %s light, %dx%d shadow map (%s fit, %s "
             "faces, %s filter) in %.1f ms, frame in %.1f ms; %s into %s\n",
-            models.size(), counts.faces, counts.fragments, shadows::name(options.light.type),
+            models.size(), counts.faces, counts.shaded, shadows::name(options.light.type),
             map.size(), map.size(), shadows::name(options.fit), shadows::name(map_faces),
             shadows::name(options.lookup.filter), map_ms.count(), frame_ms.count(),
             shadows::name(show), output.c_str());

@@ -178,7 +178,7 @@ int main(int argc, char** argv) {
             "filter) and its light built in %.1f ms; frame (with the sky and the %s tone map) in "
             "%.1f ms; into "
             "%s%s\n",
-            models.size(), counts.faces, counts.fragments,
+            models.size(), counts.faces, counts.shaded,
             options.material ? environment::name(*options.material) : "mirror and rough-metal",
             env_options.source.c_str(), environment::name(env.layout()),
             env.cube() ? env.cube()->size() : env.latlong()->height(),

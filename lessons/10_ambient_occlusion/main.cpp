@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
         std::printf(
             "%zu models: %zu faces, %zu fragments shaded; %s occlusion%s in a frame of %.1f ms; "
             "%s into %s\n",
-            models.size(), frame.counts.faces, frame.counts.fragments,
+            models.size(), frame.counts.faces, frame.counts.shaded,
             occlusion::name(options.ao.method), settings, ms.count(), occlusion::name(show),
             output.c_str());
         return 0;

@@ -1,23 +1,27 @@
 // How a triangle's coverage is sampled and how often its fragment stage
 // runs: the coverage policies lesson 05's draw() takes at its seam
 // (pipeline.hpp, "coverage"). Each tests the samples of sample_pattern.hpp
-// with lesson 02's rasterizer, fill rule and all: the triangle moved by
+// with lesson 02's edge functions, fill rule and all: the triangle moved by
 // minus a sample's offset puts that sample where the rasterizer tests, at
 // the pixel's centre. Derivations and pictures: docs/11_antialiasing.md.
 //
-//   const antialiasing::Supersampling ssaa{antialiasing::sample_offsets(Pattern::grid, 4)};
+//   const std::vector<rl::vec2> four = antialiasing::sample_offsets(Pattern::grid, 4);
 //   perspective::RenderTarget<rl::vec3> frame(800, 600, {.samples = 4}, background);
-//   perspective::draw(geometry, program, frame, {}, ssaa);
-//   const rl::Grid<rl::vec3> picture = perspective::resolve(frame.colour(), 4);
+//   perspective::draw(geometry, program, frame, {}, antialiasing::Multisampling{four});
+//   const rl::Grid<rl::vec3> light = antialiasing::resolve(frame.colour(), four, Resolve::box);
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "05_perspective/pipeline.hpp"
+#include "sample_pattern.hpp"
 
 namespace antialiasing {
 
@@ -61,13 +65,13 @@ struct Supersampling {
         const float bias = sampling.bias;
         bool ok = true;
         for (int s = 0; s < n; ++s)
-            ok &= triangles::rasterize(
-                options.raster, t.screen(offsets[static_cast<std::size_t>(s)]), sampling.rect,
-                [&](int x, int y, rl::vec3 b) {
-                    const float z = perspective::window_depth(t, b, bias);
-                    if (perspective::fragment_operations(program, t, x, y, z, b, target, n * x + s))
-                        ++counts.fragments;
-                });
+            ok &=
+                triangles::rasterize(options.raster, t.screen(offsets[static_cast<std::size_t>(s)]),
+                                     sampling.rect, [&](int x, int y, rl::vec3 b) {
+                                         const float z = perspective::window_depth(t, b, bias);
+                                         perspective::fragment_operations(
+                                             program, t, x, y, z, b, target, n * x + s, counts);
+                                     });
         return ok;
     }
 };
@@ -102,10 +106,64 @@ inline triangles::PixelRect box_within(const triangles::ScreenTriangle& t,
             clamp(std::ceil(y1) + 1, rect.y0, rect.y1)};
 }
 
+// A pixel's samples as bits: bit s for sample s (kMaxSamples of them).
+using SampleMask = std::uint32_t;
+
+// Lesson 02's edge functions of the triangle moved by minus each sample's
+// offset: sample[s].covered(x, y) is whether sample s of pixel (x, y) is
+// covered, with the fill rule, and its weights there, as rasterizing the
+// moved triangle would find them. Multisampling asks pixel by pixel, so it
+// takes the edge method (the production one) whatever the options say.
+struct SampleEdges {
+    std::array<triangles::EdgeWeights, kMaxSamples> sample;
+    bool all_in_range = true;  // false: the rasterizer refuses one of the moved triangles
+};
+template <class T>
+SampleEdges sample_edges(const T& t, const std::vector<rl::vec2>& offsets,
+                         triangles::RasterMethod method) {
+    if (method != triangles::RasterMethod::edge)
+        throw std::invalid_argument(
+            "multisampling tests each sample with lesson 02's edge functions, not the " +
+            std::string(name(method)) + " rasterizer");
+    if (offsets.size() > kMaxSamples)
+        throw std::invalid_argument("at most " + std::to_string(kMaxSamples) +
+                                    " samples a pixel, not " + std::to_string(offsets.size()));
+    SampleEdges edges;
+    for (std::size_t s = 0; s < offsets.size(); ++s) {
+        const triangles::ScreenTriangle moved = t.screen(offsets[s]);
+        edges.sample[s] = triangles::EdgeWeights(moved);
+        edges.all_in_range &= triangles::within_raster_range(moved);
+    }
+    return edges;
+}
+
+// A pixel's samples after the first pass: those the triangle covers, their
+// window depths, and those that passed the depth test.
+struct PixelSamples {
+    SampleMask covered = 0, passed = 0;
+    std::array<float, kMaxSamples> depth;
+};
+template <class T, class... Pixels>
+PixelSamples test_samples(const T& t, const SampleEdges& edges, const Sampling& sampling,
+                          const perspective::RenderTarget<Pixels...>& target, int x, int y) {
+    PixelSamples p;
+    for (int s = 0; s < sampling.n; ++s) {
+        const std::optional<rl::vec3> b = edges.sample[s].covered(x, y);
+        if (!b) continue;
+        p.covered |= SampleMask{1} << s;
+        p.depth[s] = perspective::window_depth(t, *b, sampling.bias);
+        if (perspective::sample_passes(target, sampling.n * x + s, y, p.depth[s]))
+            p.passed |= SampleMask{1} << s;
+    }
+    return p;
+}
+
 // [doc:multisampling]
 // Multisampling: coverage and depth per sample, the fragment stage once per
-// pixel the triangle reaches (at `at`), its outputs stored in every sample
-// that it covers and that passed the depth test. A program that discards
+// pixel the triangle reaches (at `at`), its outputs written in every sample
+// that it covers and that passed the depth test. Two short passes a pixel
+// around its coverage mask, as llvmpipe does: the samples' tests, then (if
+// any passed) the fragment stage and the writes. A program that discards
 // discards the whole pixel's share of the triangle.
 struct Multisampling {
     std::vector<rl::vec2> offsets;
@@ -116,72 +174,44 @@ struct Multisampling {
                     const perspective::PipelineOptions& options,
                     perspective::PipelineCounts& counts) const {
         const Sampling sampling = start_sampling(t, target, offsets.size(), options, counts);
-        const int n = sampling.n;
-        const float bias = sampling.bias;
-        const zbuffer::DepthState& state = target.depth_state;
-        rl::FloatImage* const depth = target.depth();
-        // Per sample of the triangle's box within the rectangle (a pixel of
-        // margin for samples off the centre): its depth where the triangle
-        // covers it (NaN: not covered), and whether that depth passed the test.
+        const SampleEdges edges = sample_edges(t, offsets, options.raster);
         const triangles::PixelRect box = box_within(t.screen(), sampling.rect);
-        const int width = box.x1 - box.x0, height = box.y1 - box.y0;
-        if (width <= 0 || height <= 0) return triangles::within_raster_range(t.screen());
-        std::vector<float> covered(static_cast<std::size_t>(width) * height * n, NAN);
-        std::vector<char> passed(covered.size(), 0);
-        const auto slot = [&](int x, int y, int s) {
-            return (static_cast<std::size_t>(y - box.y0) * width + (x - box.x0)) * n + s;
-        };
-        bool ok = true;
-        for (int s = 0; s < n; ++s)
-            ok &= triangles::rasterize(
-                options.raster, t.screen(offsets[static_cast<std::size_t>(s)]), box,
-                [&](int x, int y, rl::vec3 b) {
-                    const float z = perspective::window_depth(t, b, bias);
-                    covered[slot(x, y, s)] = z;
-                    passed[slot(x, y, s)] =
-                        !depth || zbuffer::depth_passes(state.compare, z, depth->at(n * x + s, y));
-                });
-        const float area2 = triangles::signed_area2(t.screen());
         for (int y = box.y0; y < box.y1; ++y)
             for (int x = box.x0; x < box.x1; ++x) {
-                const std::size_t first = slot(x, y, 0);
-                if (std::none_of(passed.begin() + static_cast<std::ptrdiff_t>(first),
-                                 passed.begin() + static_cast<std::ptrdiff_t>(first + n),
-                                 [](char p) { return p != 0; }))
-                    continue;
-                // Where the fragment stage runs: the centre, or the mean of
-                // the covered samples' offsets.
-                rl::vec2 where{0, 0};
-                if (at == ShadeAt::centroid) {
-                    int count = 0;
-                    for (int s = 0; s < n; ++s)
-                        if (!std::isnan(covered[first + static_cast<std::size_t>(s)]))
-                            where = where + offsets[static_cast<std::size_t>(s)], ++count;
-                    where = where * (1.0f / static_cast<float>(count));
-                }
+                // 1. Each sample's coverage and depth test.
+                const PixelSamples samples = test_samples(t, edges, sampling, target, x, y);
+                if (samples.passed == 0) continue;
+                // 2. The fragment stage once, its outputs written where the test passed.
+                const rl::vec2 where = shading_offset(samples.covered, sampling.n);
                 const rl::vec3 b = triangles::barycentric(t.screen(),
                                                           {static_cast<float>(x) + 0.5f + where.x,
                                                            static_cast<float>(y) + 0.5f + where.y},
-                                                          area2);
-                const auto fragment =
-                    perspective::fragment_at(t, x, y, perspective::window_depth(t, b, bias), b);
-                const auto out = program.fragment(fragment);
-                if constexpr (perspective::ProgramTraits<P>::may_discard)
-                    if (!out) continue;
-                for (int s = 0; s < n; ++s) {
-                    const std::size_t i = first + static_cast<std::size_t>(s);
-                    if (!passed[i]) continue;
-                    if constexpr (sizeof...(Pixels) > 0) {
-                        if constexpr (perspective::ProgramTraits<P>::may_discard)
-                            perspective::store(target, n * x + s, y, *out);
-                        else
-                            perspective::store(target, n * x + s, y, out);
+                                                          triangles::signed_area2(t.screen()));
+                const float z = perspective::window_depth(t, b, sampling.bias);
+                const auto out = perspective::shade(
+                    program, perspective::fragment_at(t, x, y, z, b), target, counts);
+                if (!out) continue;
+                for (int s = 0; s < sampling.n; ++s)
+                    if (samples.passed & (SampleMask{1} << s)) {
+                        perspective::write_sample(target, sampling.n * x + s, y, samples.depth[s],
+                                                  *out);
+                        ++counts.stored;
                     }
-                    if (depth && state.write) depth->at(n * x + s, y) = covered[i];
-                    ++counts.fragments;
-                }
             }
-        return ok;
+        return edges.all_in_range;
+    }
+
+  private:
+    // Where the fragment stage runs, from the pixel's centre: nowhere else,
+    // or the mean of the covered samples' offsets.
+    rl::vec2 shading_offset(SampleMask covered, int n) const {
+        if (at == ShadeAt::centre) return {0, 0};
+        rl::vec2 sum{0, 0};
+        int count = 0;
+        for (int s = 0; s < n; ++s)
+            if (covered & (SampleMask{1} << s))
+                sum = sum + offsets[static_cast<std::size_t>(s)], ++count;
+        return sum * (1.0f / static_cast<float>(count));
     }
 };
 // [/doc:multisampling]

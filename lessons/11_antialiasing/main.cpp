@@ -96,8 +96,9 @@ int main(int argc, char** argv) {
                                                antialiasing::name(options.pattern) + " pattern, " +
                                                antialiasing::name(options.resolve) + " resolve)";
         std::printf(
-            "%zu models: %zu faces, %zu samples stored; %s, %s in a frame of %.1f ms; into %s\n",
-            models.size(), frame.counts.faces, frame.counts.fragments,
+            "%zu models: %zu faces, %zu fragments shaded, %zu samples stored; %s, %s in a frame "
+            "of %.1f ms; into %s\n",
+            models.size(), frame.counts.faces, frame.counts.shaded, frame.counts.stored,
             antialiasing::name(options.method), sampling.c_str(), ms.count(), output.c_str());
         return 0;
     });

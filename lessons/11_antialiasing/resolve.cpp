@@ -1,13 +1,27 @@
 #include "resolve.hpp"
 
+#include <algorithm>
 #include <cmath>
 
-#include "05_perspective/render_target.hpp"
 #include "06_shading/colour.hpp"
 
 namespace antialiasing {
 
 namespace {
+
+// [doc:box]
+// The mean of a pixel's own samples, summed in double (so that equal
+// samples give back exactly their value).
+rl::vec3 box_at(const rl::Grid<rl::vec3>& samples, int n, int x, int y) {
+    double sum[3] = {0, 0, 0};
+    for (int s = 0; s < n; ++s) {
+        const rl::vec3 c = samples.get(x * n + s, y);
+        sum[0] += c.x, sum[1] += c.y, sum[2] += c.z;
+    }
+    return {static_cast<float>(sum[0] / n), static_cast<float>(sum[1] / n),
+            static_cast<float>(sum[2] / n)};
+}
+// [/doc:box]
 
 // [doc:tent]
 // The tent's weight of a sample at (dx, dy) pixels from a pixel's centre.
@@ -42,10 +56,11 @@ rl::vec3 tent_at(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>&
 rl::Grid<rl::vec3> resolve(const rl::Grid<rl::vec3>& samples, const std::vector<rl::vec2>& offsets,
                            Resolve filter) {
     const int n = static_cast<int>(offsets.size());
-    if (filter == Resolve::box) return perspective::resolve(samples, n);
     rl::Grid<rl::vec3> out(samples.width() / n, samples.height());
     for (int y = 0; y < out.height(); ++y)
-        for (int x = 0; x < out.width(); ++x) out.at(x, y) = tent_at(samples, offsets, x, y);
+        for (int x = 0; x < out.width(); ++x)
+            out.at(x, y) =
+                filter == Resolve::box ? box_at(samples, n, x, y) : tent_at(samples, offsets, x, y);
     return out;
 }
 

@@ -56,7 +56,7 @@ const rl::Image& FrameRenderer::render(const Settings& settings, const perspecti
     const normal_mapping::RenderOptions options = options_for(settings);
     if (settings.path == Path::lesson07) {
         perspective::ColourTarget target = perspective::colour_target(width, height);
-        stats_.pixels_shaded = normal_mapping::render(models_, camera, options, target).fragments;
+        stats_.pixels_shaded = normal_mapping::render(models_, camera, options, target).shaded;
         picture_ = std::move(target.colour());
         frame_ = &picture_;
     } else {  // the fast path, with lesson 08's two passes for shadows

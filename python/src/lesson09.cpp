@@ -87,7 +87,7 @@ void bind_lesson09(py::module_ m) {
             r.colour = environment::tone_mapped(frame.colour(), exposure_options);
             r.depth = std::move(*frame.depth());
             r.count("faces", counts.faces);
-            r.count("fragments", counts.fragments);
+            r.count("fragments", counts.shaded);
             r.count("map_size", env_options.size);
             return r;
         },

@@ -75,7 +75,7 @@ void bind_lesson10(py::module_ m) {
             r.colour = occlusion::picture(frame, options, picture, &screen);
             r.depth = *frame.g.depth();
             r.count("faces", frame.counts.faces);
-            r.count("fragments", frame.counts.fragments);
+            r.count("fragments", frame.counts.shaded);
             return r;
         },
         py::arg("models") = py::none(), py::arg("camera") = py::none(), py::kw_only(),

@@ -60,7 +60,8 @@ void bind_lesson11(py::module_ m) {
                                      shadow, options, width, height);
             r.colour = frame.picture;
             r.count("faces", frame.counts.faces);
-            r.count("samples_stored", frame.counts.fragments);
+            r.count("fragments", frame.counts.shaded);
+            r.count("samples_stored", frame.counts.stored);
             return r;
         },
         py::arg("models") = py::none(), py::arg("camera") = py::none(), py::kw_only(),

@@ -14,7 +14,7 @@ void take_frame(Result& r, perspective::ColourTarget& frame,
     r.count("outside", counts.outside);
     r.count("drawn", counts.drawn);
     r.count("refused", counts.refused);
-    r.count("fragments", counts.fragments);
+    r.count("fragments", counts.shaded);
     const auto point = [](rl::vec3 p) -> std::vector<double> { return {p.x, p.y, p.z}; };
     r.count("eye", point(camera.eye));  // the camera as framed: what the program prints
     r.count("target", point(camera.target));

@@ -72,7 +72,7 @@ std::size_t draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camer
     PipelineOptions options;
     options.interpolation = interpolation;
     return draw(WorldScene{&scene}, WorldProgram{view_projection(camera, 1.0f)}, target, options)
-        .fragments;
+        .shaded;
 }
 
 UvFrame draw_uv(const std::vector<WorldTriangle>& scene, const Camera& camera, int size,

@@ -126,7 +126,7 @@ struct LessonFrame {
 void frame_lesson(benchmark::State& state, const LessonFrame* f) {
     for (auto _ : state) {
         perspective::ColourTarget frame = perspective::colour_target(f->size, f->size);
-        benchmark::DoNotOptimize(render(*f->models, f->camera, f->options, frame).fragments);
+        benchmark::DoNotOptimize(render(*f->models, f->camera, f->options, frame).shaded);
     }
 }
 
@@ -141,7 +141,7 @@ void frame_depth_only(benchmark::State& state, const LessonFrame* f) {
         perspective::RenderTarget<> depth(f->size, f->size);
         benchmark::DoNotOptimize(
             perspective::draw(shading::Surface(m.lit.model.mesh, m.lit.normals), unlit, depth)
-                .fragments);
+                .shaded);
     }
 }
 
@@ -334,7 +334,7 @@ int main(int argc, char** argv) {
             const AngleError tr = compare(big_truth, theirs);
             const auto fragments_of = [](const LessonFrame& f) {
                 perspective::ColourTarget frame = perspective::colour_target(f.size, f.size);
-                return render(*f.models, f.camera, f.options, frame).fragments;
+                return render(*f.models, f.camera, f.options, frame).shaded;
             };
             const auto row = [&](const std::string& name, const char* timer, std::size_t fragments,
                                  const AngleError& e) {

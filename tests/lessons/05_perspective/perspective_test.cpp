@@ -102,7 +102,7 @@ TEST(PerspectiveTest, TriangleWhollyBehindTheEyeDrawsNothing) {
     for (ClipMode mode : {ClipMode::near, ClipMode::guard_band, ClipMode::all}) {
         PipelineCounts counts;
         wrong_share(scene, camera, mode, &counts);
-        EXPECT_EQ(counts.fragments, 0u) << name(mode);
+        EXPECT_EQ(counts.shaded, 0u) << name(mode);
     }
 }
 
@@ -114,7 +114,7 @@ TEST(PerspectiveTest, VertexOnTheEyePlaneIsClippedNotDividedByZero) {
     PipelineCounts counts;
     EXPECT_LT(wrong_share(scene, camera, ClipMode::guard_band, &counts), 0.002);
     EXPECT_EQ(counts.refused, 0u);
-    EXPECT_GT(counts.fragments, 100u);
+    EXPECT_GT(counts.shaded, 100u);
 }
 
 TEST(PerspectiveTest, NearOnlyClippingLosesTrianglesPastTheRasterizersRange) {
@@ -278,7 +278,7 @@ double largest_uv_error(Interpolation interpolation, double* largest_derivative_
     const UvProbe probe{
         {view_projection(camera, 160.0f / 120.0f)}, scene[0], rays, worst, worst_derivative};
     const PipelineCounts counts = draw(WorldScene{&scene}, probe, frame, options);
-    EXPECT_GT(counts.fragments, 1000u);
+    EXPECT_GT(counts.shaded, 1000u);
     if (largest_derivative_error) *largest_derivative_error = worst_derivative;
     return worst;
 }
@@ -314,7 +314,7 @@ TEST(PerspectiveTest, FaceWithAVertexBehindTheEyeIsDrawnNotCulled) {
     PipelineCounts counts;
     EXPECT_LT(wrong_share(scene, camera, ClipMode::guard_band, &counts), 0.002);
     EXPECT_EQ(counts.culled, 0u);
-    EXPECT_GT(counts.fragments, 1000u);
+    EXPECT_GT(counts.shaded, 1000u);
 }
 
 TEST(PerspectiveTest, BoxesOutsideTheFrustumAreCulledAndOthersKept) {
@@ -388,14 +388,14 @@ TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
     const PipelineCounts counts = render(models, camera, {}, frame);
     EXPECT_EQ(counts.refused, 0u);
     EXPECT_GT(counts.clipped, 0u);
-    EXPECT_GT(counts.fragments, 0u);
+    EXPECT_GT(counts.shaded, 0u);
     // From inside, every face of the globe is a back face: alone, it draws nothing.
     const std::vector<TexturedModel> globe(models.end() - 1, models.end());
     perspective::ColourTarget inside = perspective::colour_target(64, 64);
     const PipelineCounts g = render(globe, camera, {}, inside);
     EXPECT_EQ(g.culled, g.faces);
     EXPECT_GT(g.faces, 0u);
-    EXPECT_EQ(g.fragments, 0u);
+    EXPECT_EQ(g.shaded, 0u);
     for (const rl::Rgba& p : inside.colour().pixels()) EXPECT_EQ(p, rl::kBackground);
 }
 
@@ -442,7 +442,7 @@ TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
     perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const PipelineCounts counts = render(big, camera, {}, frame);
     EXPECT_EQ(counts.refused, 0u);
-    EXPECT_GT(counts.fragments, 300u);
+    EXPECT_GT(counts.shaded, 300u);
     // 10^30: near * far overflows; a clear error rather than a black image.
     try {
         check(frame_box(scene_bounds(scene_at_scale(1e30f)), 50, 1));

@@ -144,7 +144,7 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     perspective::ColourTarget frame = perspective::colour_target(64, 64);
     const perspective::PipelineCounts counts = draw_model(
         ShadingModel::blinn_phong, Surface(sphere, normals, mirror), u, frame, {}, Output::srgb);
-    EXPECT_GT(counts.fragments, 1000u);
+    EXPECT_GT(counts.shaded, 1000u);
     // Lit from +x: the right half is brighter than the left.
     EXPECT_GT(frame.colour().get(44, 32).r, frame.colour().get(20, 32).r + 40);
 }
@@ -281,7 +281,7 @@ TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
     draw(surface, DiscardEverything{ortho * near}, frame, {}, Output::naive);
     const perspective::PipelineCounts counts =
         draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, frame, {}, Output::naive);
-    EXPECT_EQ(counts.fragments, 256u);
+    EXPECT_EQ(counts.shaded, 256u);
     EXPECT_EQ(frame.colour().get(8, 8).r, 255);
 }
 

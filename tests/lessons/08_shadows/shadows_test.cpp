@@ -272,7 +272,7 @@ TEST(ShadowsTest, AnEmptySceneHasAnEmptyMapAndAZeroLightIsRefused) {
     const ShadowMap map = shadow_map_for(none, camera, 1, options);
     for (float d : map.depth.pixels()) ASSERT_EQ(d, 1.0f);
     perspective::ColourTarget frame = perspective::colour_target(16, 16);
-    EXPECT_EQ(render(none, camera, options, map, frame).fragments, 0u);
+    EXPECT_EQ(render(none, camera, options, map, frame).shaded, 0u);
     perspective::Box box;
     box.add(rl::vec3{0, 0, 0});
     EXPECT_THROW(light_view({LightType::directional, {0, 0, 0}}, box), std::invalid_argument);

@@ -127,8 +127,8 @@ TEST(Coverage, SharedEdgesStoreEachSampleOnce) {
                 const auto b = perspective::draw(geometry, Counted{&runs, &lowest}, msaa, {},
                                                  Multisampling{offsets});
                 const std::size_t all = 29u * 29u * static_cast<std::size_t>(n);
-                EXPECT_EQ(a.fragments, all) << name(p) << " " << n;
-                EXPECT_EQ(b.fragments, all) << name(p) << " " << n;
+                EXPECT_EQ(a.stored, all) << name(p) << " " << n;
+                EXPECT_EQ(b.stored, all) << name(p) << " " << n;
                 for (const rl::vec3& c : ssaa.colour().pixels()) ASSERT_EQ(c.x, 1.0f);
                 for (const rl::vec3& c : msaa.colour().pixels()) ASSERT_EQ(c.x, 1.0f);
             }
@@ -268,6 +268,40 @@ TEST(Coverage, EachPolicyShadesAtItsRate) {
     EXPECT_THROW(
         perspective::draw(covering, Counted{&msaa_runs, &lowest}, four, {}, Multisampling{offsets}),
         std::invalid_argument);
+}
+
+// Lesson 05's seam from the other side: a triangle covering every sample,
+// multisampled with the fragment stage at each pixel's centre, resolves to
+// the one-sample image (to float rounding: the centre's weights come from
+// the float barycentric, the one-sample draw's from the edge functions).
+struct Gradient {
+    using Varyings = float;
+    ClipVertex<float> vertex(const ClipCorner& c) const {
+        return {rl::cast<double>(c.position), c.position.x * 0.37f + c.position.y * 0.21f};
+    }
+    rl::vec3 fragment(const Fragment<float>& f) const {
+        return {f.varyings, 1 - f.varyings, 0.25f};
+    }
+};
+
+TEST(Coverage, AllSamplesCoveredResolveToTheOneSampleImage) {
+    const ClipTriangles covering{
+        {{rl::vec4{-1, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{-1, 3, 0, 1}}}};
+    Target one = target_of(23, 1);
+    perspective::draw(covering, Gradient{}, one);
+    for (int n : {2, 4, 8, 16}) {
+        const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, n);
+        Target many = target_of(23, n);
+        const auto counts = perspective::draw(covering, Gradient{}, many, {},
+                                              Multisampling{offsets, ShadeAt::centre});
+        EXPECT_EQ(counts.stored, 23u * 23u * static_cast<std::size_t>(n));
+        const rl::Grid<rl::vec3> resolved = resolve(many.colour(), offsets, Resolve::box);
+        for (int y = 0; y < 23; ++y)
+            for (int x = 0; x < 23; ++x) {
+                EXPECT_NEAR(resolved.get(x, y).x, one.colour().get(x, y).x, 1e-6f) << n;
+                EXPECT_NEAR(resolved.get(x, y).y, one.colour().get(x, y).y, 1e-6f) << n;
+            }
+    }
 }
 
 // At a pixel the triangle covers only in part, its centre can lie outside:
