@@ -5,9 +5,11 @@
 // whole rectangle: every method's weights at a pixel do not depend on the
 // rectangle (rasterize() in raster.hpp).
 //
-//   const bool ok = triangles::for_each_band(t, rect, 0, [&](const triangles::PixelRect& band) {
-//       return triangles::rasterize(method, t, band, fragment_stage);
-//   });
+//   bool ok = true;
+//   for (const triangles::PixelRect band : triangles::Bands(t, rect, 0)) {
+//       rl::checkpoint();  // a host may stop here
+//       ok &= triangles::rasterize(method, t, band, fragment_stage);
+//   }
 #pragma once
 
 #include "rasterlab/checkpoint.hpp"
@@ -21,24 +23,41 @@ namespace triangles {
 // Rows of a band.
 inline constexpr int kCheckpointRows = 64;
 
-// Calls rl::checkpoint() and then draw(band) for each band of the rows of
-// `rect` that t's box (grown by `margin` pixels up and down) covers; returns
-// whether every call returned true. A triangle out of the rasterizer's range
-// (NaN, or farther than kMaxCoordinate) is handed over whole, for draw to
-// refuse.
-template <class Draw>
-bool for_each_band(const ScreenTriangle& t, const PixelRect& rect, float margin, Draw&& draw) {
-    rl::checkpoint();
-    if (!within_raster_range(t)) return draw(rect);
-    const auto [low, high] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
-    const PixelRange rows = centres_between(low - margin, high + margin, rect.y0, rect.y1);
-    if (rows.last - rows.first < kCheckpointRows) return draw(rect);
-    bool ok = true;
-    for (int y = rows.first; y <= rows.last; y += kCheckpointRows) {
-        if (y != rows.first) rl::checkpoint();
-        ok &= draw(PixelRect{rect.x0, y, rect.x1, std::min(y + kCheckpointRows, rows.last + 1)});
+// The bands of the rows of `rect` that t's box (grown by `margin` pixels up
+// and down) covers, bottom first, each at most kCheckpointRows high; a
+// triangle of fewer rows, or one out of the rasterizer's range (NaN, or
+// farther than kMaxCoordinate, for the rasterizer to refuse), is one band:
+// the whole of `rect`.
+class Bands {
+  public:
+    Bands(const ScreenTriangle& t, const PixelRect& rect, float margin) : rect_(rect) {
+        if (!within_raster_range(t)) return;
+        const auto [low, high] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
+        const PixelRange rows = centres_between(low - margin, high + margin, rect.y0, rect.y1);
+        if (rows.last - rows.first < kCheckpointRows) return;
+        first_ = rows.first;
+        count_ = (rows.last - rows.first) / kCheckpointRows + 1;
+        end_row_ = rows.last + 1;
     }
-    return ok;
-}
+    PixelRect operator[](int i) const {
+        if (count_ == 1) return rect_;
+        const int y = first_ + i * kCheckpointRows;
+        return {rect_.x0, y, rect_.x1, std::min(y + kCheckpointRows, end_row_)};
+    }
+
+    struct Iterator {
+        const Bands* bands;
+        int i;
+        PixelRect operator*() const { return (*bands)[i]; }
+        Iterator& operator++() { return ++i, *this; }
+        bool operator!=(const Iterator& other) const { return i != other.i; }
+    };
+    Iterator begin() const { return {this, 0}; }
+    Iterator end() const { return {this, count_}; }
+
+  private:
+    PixelRect rect_;
+    int first_ = 0, count_ = 1, end_row_ = 0;
+};
 
 }  // namespace triangles

@@ -54,11 +54,12 @@ DrawCounts draw_faces(const rl::Mesh& mesh, int width, int height, const DrawOpt
             ++counts.culled;
             continue;
         }
-        // In bands of rows, so that a host (the Python module) can stop here.
-        const bool ok = for_each_band(t.screen(), {0, 0, width, height}, 0, [&](PixelRect band) {
-            return rasterize(options.method, t.screen(), band,
-                             [&](int x, int y, rl::vec3 b) { fragment_stage(t, x, y, b); });
-        });
+        bool ok = true;
+        for (const PixelRect band : Bands(t.screen(), {0, 0, width, height}, 0)) {
+            rl::checkpoint();  // in bands of rows, so that a host (the Python module) can stop
+            ok &= rasterize(options.method, t.screen(), band,
+                            [&](int x, int y, rl::vec3 b) { fragment_stage(t, x, y, b); });
+        }
         ++(ok ? counts.drawn : counts.refused);
     }
     return counts;
