@@ -21,12 +21,7 @@ bool rasterize_bbox(const ScreenTriangle& t, const PixelRect& rect,
     if (!within_raster_range(t)) return false;
     const float area = signed_area2(t);
     if (area == 0.0f) return true;  // degenerate: covers nothing
-    const PixelRange xs =
-        centres_between(std::min({t.v[0].x, t.v[1].x, t.v[2].x}),
-                        std::max({t.v[0].x, t.v[1].x, t.v[2].x}), rect.x0, rect.x1);
-    const PixelRange ys =
-        centres_between(std::min({t.v[0].y, t.v[1].y, t.v[2].y}),
-                        std::max({t.v[0].y, t.v[1].y, t.v[2].y}), rect.y0, rect.y1);
+    const auto [xs, ys] = centres_in_box(t, rect);
     for (int y = ys.first; y <= ys.last; ++y)
         for (int x = xs.first; x <= xs.last; ++x) {
             const rl::vec2 p{x + 0.5f, y + 0.5f};

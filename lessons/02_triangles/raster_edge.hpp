@@ -68,6 +68,17 @@ inline FixedTriangle fixed_triangle(const ScreenTriangle& t) {
     return f;
 }
 
+// The pixels of `rect` whose centres lie in the snapped triangle's box.
+inline PixelBox centres_in_box(const FixedTriangle& f, const PixelRect& rect) {
+    const auto to_pixels = [](std::int64_t fixed) {
+        return static_cast<float>(fixed) / kSubpixels;
+    };
+    const auto [x0, x1] = std::minmax({f.v[0].x, f.v[1].x, f.v[2].x});
+    const auto [y0, y1] = std::minmax({f.v[0].y, f.v[1].y, f.v[2].y});
+    return {centres_between(to_pixels(x0), to_pixels(x1), rect.x0, rect.x1),
+            centres_between(to_pixels(y0), to_pixels(y1), rect.y0, rect.y1)};
+}
+
 // [doc:raster-edge]
 template <class FragmentStage>
 bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
@@ -81,16 +92,9 @@ bool rasterize_edge(const ScreenTriangle& t, const PixelRect& rect,
     struct Edge {
         std::int64_t step_x, step_y, row, bias;
     } e[3];
-    const auto to_pixels = [](std::int64_t fixed) {
-        return static_cast<float>(fixed) / kSubpixels;
-    };
-    const PixelRange xs =
-        centres_between(to_pixels(std::min({v[0].x, v[1].x, v[2].x})),
-                        to_pixels(std::max({v[0].x, v[1].x, v[2].x})), rect.x0, rect.x1);
-    const PixelRange ys =
-        centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
-                        to_pixels(std::max({v[0].y, v[1].y, v[2].y})), rect.y0, rect.y1);
-    if (xs.first > xs.last || ys.first > ys.last) return true;
+    const PixelBox box = centres_in_box(f, rect);
+    if (box.empty()) return true;
+    const PixelRange xs = box.xs, ys = box.ys;
     const FixedPoint start{xs.first * kSubpixels + kSubpixels / 2,
                            ys.first * kSubpixels + kSubpixels / 2};
     for (int k = 0; k < 3; ++k) {

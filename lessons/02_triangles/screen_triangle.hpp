@@ -72,4 +72,17 @@ inline PixelRange centres_between(float low, float high, int size) {
     return centres_between(low, high, 0, size);
 }
 
+// The pixels a rasterizer visits for a triangle: those of `rect` whose
+// centres lie in the triangle's bounding box, as columns and rows (each
+// empty when first > last).
+struct PixelBox {
+    PixelRange xs, ys;
+    bool empty() const { return xs.first > xs.last || ys.first > ys.last; }
+};
+inline PixelBox centres_in_box(const ScreenTriangle& t, const PixelRect& rect) {
+    const auto [x0, x1] = std::minmax({t.v[0].x, t.v[1].x, t.v[2].x});
+    const auto [y0, y1] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
+    return {centres_between(x0, x1, rect.x0, rect.x1), centres_between(y0, y1, rect.y0, rect.y1)};
+}
+
 }  // namespace triangles

@@ -55,13 +55,10 @@ namespace perspective {
 // rasterizer visits (0 for a triangle it would refuse).
 inline std::size_t box_samples(const triangles::ScreenTriangle& t, const triangles::PixelRect& r) {
     if (!triangles::within_raster_range(t)) return 0;
-    const auto [x0, x1] = std::minmax({t.v[0].x, t.v[1].x, t.v[2].x});
-    const auto [y0, y1] = std::minmax({t.v[0].y, t.v[1].y, t.v[2].y});
-    const triangles::PixelRange xs = triangles::centres_between(x0, x1, r.x0, r.x1),
-                                ys = triangles::centres_between(y0, y1, r.y0, r.y1);
-    if (xs.first > xs.last || ys.first > ys.last) return 0;
-    return static_cast<std::size_t>(xs.last - xs.first + 1) *
-           static_cast<std::size_t>(ys.last - ys.first + 1);
+    const triangles::PixelBox box = triangles::centres_in_box(t, r);
+    if (box.empty()) return 0;
+    return static_cast<std::size_t>(box.xs.last - box.xs.first + 1) *
+           static_cast<std::size_t>(box.ys.last - box.ys.first + 1);
 }
 
 // [doc:rasterize-triangle]

@@ -15,16 +15,8 @@ bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, F
         o.x0 = o.y0 = 0, o.x1 = o.y1 = -1;
         return true;
     }
-    const auto to_pixels = [](std::int64_t fixed) {
-        return static_cast<float>(fixed) / triangles::kSubpixels;
-    };
     const triangles::FixedPoint* v = f.v;
-    const triangles::PixelRange xs =
-        triangles::centres_between(to_pixels(std::min({v[0].x, v[1].x, v[2].x})),
-                                   to_pixels(std::max({v[0].x, v[1].x, v[2].x})), 0, width);
-    const triangles::PixelRange ys =
-        triangles::centres_between(to_pixels(std::min({v[0].y, v[1].y, v[2].y})),
-                                   to_pixels(std::max({v[0].y, v[1].y, v[2].y})), 0, height);
+    const auto [xs, ys] = triangles::centres_in_box(f, {0, 0, width, height});
     o.x0 = xs.first, o.x1 = xs.last, o.y0 = ys.first, o.y1 = ys.last;
     if (o.empty()) return true;  // no centre in its box: the rest would be thrown away
     // [doc:edges]
