@@ -41,7 +41,11 @@ struct MeshView {
     MeshView(const rl::Mesh& m, const rl::mat4& model = rl::mat4::identity())
         : mesh(&m), mirrored(rl::determinant(rl::linear_part(model)) < 0) {}
     int face_count() const { return static_cast<int>(mesh->faces.size()); }
-    MeshCorner corner(int face, int k) const { return {mesh, face, mirrored ? (3 - k) % 3 : k}; }
+    // The mesh's corner handed over as corner k of a face: 0, 2, 1 when
+    // mirrored. The order is its own inverse: the mesh's corner k is also
+    // handed over as corner mesh_corner(k).
+    int mesh_corner(int k) const { return mirrored && k != 0 ? 3 - k : k; }
+    MeshCorner corner(int face, int k) const { return {mesh, face, mesh_corner(k)}; }
 };
 
 // Back-face test in clip space, before the divide: the sign of det[x y w]

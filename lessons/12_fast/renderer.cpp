@@ -114,7 +114,7 @@ struct Renderer::Impl {
     shadows::ShadowLookup shadow_lookup;
     std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
     std::vector<char> drawn;                                           // per model, this frame
-    std::vector<char> mirrors;  // per model: its matrix mirrors (lesson 05's MeshView decides)
+    std::vector<perspective::MeshView> views;  // per model: lesson 05's view, its corner order
     // The faces in pieces of at most kPieceFaces, each set up by one thread
     // into its own triangles; `triangles` reads them as one array, in order.
     // The pieces depend on the models only, never on the thread count.
@@ -159,8 +159,7 @@ struct Renderer::Impl {
                                          "fast path (their size is the cause, not the image's)");
             }
             placed.push_back(std::nullopt);
-            mirrors.push_back(
-                perspective::MeshView(m.lit.model.mesh, m.lit.model.transform).mirrored);
+            views.push_back(perspective::MeshView(m.lit.model.mesh, m.lit.model.transform));
             clip.emplace_back(o.vertex_cache ? models.back().representative.size()
                                              : models.back().indices.size());
             if (o.depth_only) {  // nothing is shaded: no surface, no material
@@ -319,14 +318,13 @@ void Renderer::Impl::run_vertex_stage(const perspective::Camera& camera, FrameCo
         const normal_mapping::NormalMappedShader shader =
             normal_mapping::shader_for(*s.models[i].source, p, r);
         const FastModel& m = s.models[i];
-        const bool mirrored = p.surface.view.mirrored;
         std::vector<perspective::ClipVertex<Varyings>>& out = s.clip[i];
         s.for_each_vertex(m, counts, [&](std::size_t v) {
             if (s.options.vertex_cache) {
                 const int face = static_cast<int>(m.representative[v] / 3);
                 const int corner = static_cast<int>(m.representative[v] % 3);
-                // The surface hands corner k over as (3 - k) % 3 when mirrored.
-                const int k = mirrored ? (3 - corner) % 3 : corner;
+                // Mesh corner `corner` is the surface's corner k.
+                const int k = p.surface.view.mesh_corner(corner);
                 out[v] = shader.vertex(p.surface.corner(face, k));
             } else {  // every corner of every face, in the surface's order
                 out[v] = shader.vertex(
@@ -360,18 +358,17 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
         const perspective::TexturedModel& model = m.source->lit.model;
         const rl::mat4 model_view_projection = view_projection * model.transform;
         std::vector<perspective::ClipVertex<Varyings>>& out = clip[i];
-        const bool mirrored = mirrors[i];
+        const perspective::MeshView& view = views[i];
         for_each_vertex(m, counts, [&](std::size_t v) {
             // With the vertex cache, mesh corner c (a vertex's position does
             // not depend on the order the corners are handed over in);
-            // without it, corner v in the surface's order: corner k of the
-            // face is the mesh's (3 - k) % 3 when mirrored, as lesson 05's
+            // without it, corner v in the surface's order, as lesson 05's
             // MeshView hands it over.
             std::size_t c = v;
             if (options.vertex_cache)
                 c = m.representative[v];
-            else if (mirrored)
-                c = c / 3 * 3 + (3 - c % 3) % 3;
+            else
+                c = c / 3 * 3 + static_cast<std::size_t>(view.mesh_corner(static_cast<int>(c % 3)));
             const perspective::MeshCorner corner{&model.mesh, static_cast<int>(c / 3),
                                                  static_cast<int>(c % 3)};
             out[v] = {perspective::clip_position(model_view_projection, corner.position()), {}};
@@ -424,7 +421,7 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
             }
         };
         const FastModel& m = s.models[i];
-        const bool mirrored = s.mirrors[i];
+        const perspective::MeshView& view = s.views[i];
         const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
         for (std::size_t f = piece.first_face; f < piece.first_face + piece.faces; ++f) {
             // The corners of step 1: with the vertex cache, three indices into
@@ -432,11 +429,8 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
             // mirrored; without it, already in the surface's order.
             // (Read where they are: a face culled costs no copy of its corners.)
             std::size_t corner[3] = {3 * f, 3 * f + 1, 3 * f + 2};
-            if (s.options.vertex_cache) {
-                const std::uint32_t* index = &m.indices[3 * f];
-                corner[0] = index[0], corner[1] = index[mirrored ? 2 : 1];
-                corner[2] = index[mirrored ? 1 : 2];
-            }
+            if (s.options.vertex_cache)
+                for (int k = 0; k < 3; ++k) corner[k] = m.indices[3 * f + view.mesh_corner(k)];
             // Lesson 05's stages 2-4: cull, clip, divide and viewport, set up.
             perspective::assemble_face(vertices[corner[0]], vertices[corner[1]],
                                        vertices[corner[2]], static_cast<int>(f), planes, s.width,

@@ -304,6 +304,26 @@ TEST(Coverage, AllSamplesCoveredResolveToTheOneSampleImage) {
     }
 }
 
+// Supersampling shades every sample where it lies: a constant colour over a
+// triangle covering every sample resolves to the one-sample image exactly,
+// after n fragment runs a pixel.
+TEST(Coverage, SupersamplingAFlatColourResolvesToTheOneSampleImage) {
+    const ClipTriangles covering{
+        {{rl::vec4{-1, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{-1, 3, 0, 1}}}};
+    int runs = 0;
+    float lowest = 1;
+    Target one = target_of(23, 1);
+    perspective::draw(covering, Counted{&runs, &lowest}, one);
+    for (int n : {2, 4, 8, 16}) {
+        const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, n);
+        Target many = target_of(23, n);
+        runs = 0;
+        perspective::draw(covering, Counted{&runs, &lowest}, many, {}, Supersampling{offsets});
+        EXPECT_EQ(runs, 23 * 23 * n);
+        EXPECT_EQ(resolve(many.colour(), offsets, Resolve::box), one.colour()) << n;
+    }
+}
+
 // At a pixel the triangle covers only in part, its centre can lie outside:
 // shading there extrapolates the varyings (u below 0 here, where u is 0 on
 // the far edge); shading at the centroid of the covered samples stays in.
