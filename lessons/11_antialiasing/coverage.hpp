@@ -112,8 +112,8 @@ using SampleMask = std::uint32_t;
 // Lesson 02's edge functions of the triangle moved by minus each sample's
 // offset: sample[s].covered(x, y) is whether sample s of pixel (x, y) is
 // covered, with the fill rule, and its weights there, as rasterizing the
-// moved triangle would find them. Multisampling asks pixel by pixel, so it
-// takes the edge method (the production one) whatever the options say.
+// moved triangle would find them. Multisampling asks pixel by pixel, which
+// only the edge method (the production one) answers: another is refused.
 struct SampleEdges {
     std::array<triangles::EdgeWeights, kMaxSamples> sample;
     bool all_in_range = true;  // false: the rasterizer refuses one of the moved triangles
@@ -176,6 +176,7 @@ struct Multisampling {
         const Sampling sampling = start_sampling(t, target, offsets.size(), options, counts);
         const SampleEdges edges = sample_edges(t, offsets, options.raster);
         const triangles::PixelRect box = box_within(t.screen(), sampling.rect);
+        const float area2 = triangles::signed_area2(t.screen());
         for (int y = box.y0; y < box.y1; ++y)
             for (int x = box.x0; x < box.x1; ++x) {
                 // 1. Each sample's coverage and depth test.
@@ -186,7 +187,7 @@ struct Multisampling {
                 const rl::vec3 b = triangles::barycentric(t.screen(),
                                                           {static_cast<float>(x) + 0.5f + where.x,
                                                            static_cast<float>(y) + 0.5f + where.y},
-                                                          triangles::signed_area2(t.screen()));
+                                                          area2);
                 const float z = perspective::window_depth(t, b, sampling.bias);
                 const auto out = perspective::shade(
                     program, perspective::fragment_at(t, x, y, z, b), target, counts);
