@@ -1,6 +1,7 @@
 #include "packed_texture.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -25,14 +26,20 @@ PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
         throw std::invalid_argument("a texture too large for 32-bit texel offsets");
     texels.resize(total);
     if (decoded && !one_word) blue_words.resize(total);
-    const auto wide = [&](std::uint8_t byte) {
-        return static_cast<std::uint32_t>(std::lround(encoding->value[byte] * 65535.0f));
-    };
-    // The square root spends the bits where the eye (and sRGB) tells levels
-    // apart: near black, where a level is a small step of light.
-    const auto root = [&](std::uint8_t byte, float largest) {
-        return static_cast<std::uint32_t>(std::lround(std::sqrt(encoding->value[byte]) * largest));
-    };
+    // What each byte packs to, worked out once for the 256 bytes rather than
+    // three times at every texel (the rounding is a call into libm).
+    std::array<std::uint32_t, 256> wide{}, root_11_bits{}, root_10_bits{};
+    if (encoding)
+        for (int byte = 0; byte < 256; ++byte) {
+            const float value = encoding->value[byte];
+            wide[byte] = static_cast<std::uint32_t>(std::lround(value * 65535.0f));
+            // The square root spends the bits where the eye (and sRGB) tells
+            // levels apart: near black, where a level is a small step of light.
+            root_11_bits[byte] =
+                static_cast<std::uint32_t>(std::lround(std::sqrt(value) * 2047.0f));
+            root_10_bits[byte] =
+                static_cast<std::uint32_t>(std::lround(std::sqrt(value) * 1023.0f));
+        }
     std::size_t at = 0;
     for (int i = 0; i < kMaxLevels; ++i) {
         const int level = std::min(i, levels - 1);
@@ -47,11 +54,11 @@ PackedTexture::PackedTexture(const textures::MipChain& chain, bool all_levels,
                     if (!encoding) {
                         std::memcpy(&texels[at], &texel, sizeof texel);
                     } else if (one_word) {
-                        texels[at] = root(texel.r, 2047.0f) | root(texel.g, 2047.0f) << 11 |
-                                     root(texel.b, 1023.0f) << 22;
+                        texels[at] = root_11_bits[texel.r] | root_11_bits[texel.g] << 11 |
+                                     root_10_bits[texel.b] << 22;
                     } else {
-                        texels[at] = wide(texel.r) | wide(texel.g) << 16;
-                        blue_words[at] = wide(texel.b);
+                        texels[at] = wide[texel.r] | wide[texel.g] << 16;
+                        blue_words[at] = wide[texel.b];
                     }
                     ++at;
                 }

@@ -463,13 +463,17 @@ TEST(Image, TheSpecularMapInTheNormalMapsAlphaLeavesTheImageAlone) {
                                                      : f.object_map.get();
                 packed += map && f.specular_map && map->alpha_holds_other;
             }
+            // Each renderer prepares the models once for the three views.
+            fast::Renderer packed_in_alpha(s.models, 96, 72, on), read_apart(s.models, 96, 72, off);
             for (int view = 0; view < 3; ++view) {
                 const float distance = next(0.8f, 5), azimuth = next(0, 6.2832f);
                 s.camera.eye = {distance * std::cos(azimuth), next(0.1f, 3),
                                 distance * std::sin(azimuth)};
                 s.camera.target = {next(-0.5f, 0.5f), next(0, 0.8f), next(-0.5f, 0.5f)};
                 s.camera.near = 0.05f;
-                EXPECT_EQ(fast_image(s, on, 96, 72), fast_image(s, off, 96, 72))
+                packed_in_alpha.render(s.camera);
+                read_apart.render(s.camera);
+                EXPECT_EQ(packed_in_alpha.frame(), read_apart.frame())
                     << normal_mapping::name(normals) << ", " << textures::name(filter) << ", view "
                     << view;
             }
