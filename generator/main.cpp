@@ -13,9 +13,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> only;
     app.add_option("-o,--out", out, "Folder to write into")->capture_default_str();
     app.add_option("--model", only, "Make only these models (globe, crate, floor, torus, rock)");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-
-    return rl::guarded_main("make_assets", [&] {
+    return app.run(argc, argv, "make_assets", [&] {
         std::filesystem::create_directories(out);
         int made = 0;
         for (const assets::ModelMaker& maker : assets::all_models()) {

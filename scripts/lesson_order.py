@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
 """Checks that lessons stack in order: a file of lesson NN (and of its tests)
-includes only common/ and lessons numbered NN or lower.
+includes only common/ and lessons numbered NN or lower; and that no file
+reaches into another lesson's lab/ (a lab is its lesson's own program: the
+reference computations other lessons build on sit in that lesson's truths/).
 
     scripts/lesson_order.py [ROOT]            # exit 1 and list every offence
     scripts/lesson_order.py --selftest        # proves a bad include is caught
@@ -15,7 +17,7 @@ import shutil
 import sys
 import tempfile
 
-INCLUDE = re.compile(r'^\s*#\s*include\s+"(\d\d)_[\w-]+/', re.M)
+INCLUDE = re.compile(r'^\s*#\s*include\s+"(\d\d)_[\w-]+/(lab/)?', re.M)
 LESSON = re.compile(r"^(\d\d)_")
 
 
@@ -34,10 +36,13 @@ def offences(root: pathlib.Path):
                     continue
                 text = path.read_text(encoding="utf-8", errors="replace")
                 for inc in INCLUDE.finditer(text):
+                    line = text.count("\n", 0, inc.start(1)) + 1
                     if int(inc.group(1)) > own:
-                        line = text.count("\n", 0, inc.start()) + 1
                         found.append(f"{path.relative_to(root)}:{line}: lesson {own:02d} includes "
                                      f"lesson {inc.group(1)} (a later lesson)")
+                    elif inc.group(2) and int(inc.group(1)) != own:
+                        found.append(f"{path.relative_to(root)}:{line}: lesson {own:02d} includes "
+                                     f"lesson {inc.group(1)}'s lab/ (share it from truths/)")
     return found
 
 
@@ -54,7 +59,13 @@ def selftest(root: pathlib.Path) -> int:
         if len(caught) != 1 or "02_triangles/raster.hpp" not in caught[0]:
             print("selftest: a bad include in lesson 02 was not caught:", caught)
             return 1
-    print("selftest: a bad include is caught")
+        victim.write_text(victim.read_text().replace('"05_perspective/pipeline.hpp"',
+                                                     '"01_lines/lab/line_measure.hpp"'))
+        caught = offences(copy)
+        if len(caught) != 1 or "lab/" not in caught[0]:
+            print("selftest: an include of lesson 01's lab/ from lesson 02 was not caught:", caught)
+            return 1
+    print("selftest: a bad include is caught (a later lesson's, and another lesson's lab/)")
     return 0
 
 
@@ -69,8 +80,8 @@ def main() -> int:
     for line in found:
         print(line)
     if found:
-        print(f"{len(found)} include(s) of a later lesson: a lesson may use only common/ and "
-              "earlier lessons (docs/index.md#how-the-lessons-stack)")
+        print(f"{len(found)} include(s) out of order: a lesson may use only common/ and "
+              "earlier lessons, and not their lab/ (docs/index.md#how-the-lessons-stack)")
         return 1
     print("every lesson includes only common/ and earlier lessons")
     return 0

@@ -1,6 +1,8 @@
 // CLI11, compiled once for every program (rasterlab/cli.hpp says why).
 #include "rasterlab/cli.hpp"
 
+#include "rasterlab/main_guard.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <charconv>
@@ -182,6 +184,11 @@ std::optional<int> CommandLine::parse(int argc, char** argv) {
         return app_->exit(error);
     }
     return std::nullopt;
+}
+
+int CommandLine::run(int argc, char** argv, const char* program, const std::function<int()>& body) {
+    if (const std::optional<int> exit = parse(argc, argv)) return *exit;
+    return guarded_main(program, body);
 }
 
 void add_light_option(CommandLine& app, std::vector<float>& light) {

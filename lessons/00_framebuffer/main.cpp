@@ -93,6 +93,5 @@ int main(int argc, char** argv) {
                  "Write the TGA output uncompressed (type 2) instead of RLE (type 10)");
     rl::add_method_option(app, "--misread", o.misread, lesson00::kMisreadings,
                           "Instead, write the card as a decoder with this mistake would show it");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("00_framebuffer", [&] { return run(o); });
+    return app.run(argc, argv, "00_framebuffer", [&] { return run(o); });
 }

@@ -29,14 +29,8 @@ rl::Image make_test_card(int width, int height);
 // and takes the file's first row for the top one (the picture turns upside
 // down, since our files start at the bottom).
 enum class Misreading { none, byte_order, origin };
-inline constexpr std::array<rl::Named<Misreading>, 3> kMisreadingNames = {
-    {{Misreading::none, "none"},
-     {Misreading::byte_order, "byte-order"},
-     {Misreading::origin, "origin"}}};
-inline constexpr std::array<Misreading, 3> kMisreadings = rl::values_of(kMisreadingNames);
-inline const char* name(Misreading value) {
-    return rl::name_in(kMisreadingNames, value);
-}
+RASTERLAB_NAMED_ENUM(Misreading, kMisreadings, {Misreading::none, "none"},
+                     {Misreading::byte_order, "byte-order"}, {Misreading::origin, "origin"});
 
 // What such a decoder shows for an image written correctly.
 rl::Image misread(const rl::Image& image, Misreading mistake);

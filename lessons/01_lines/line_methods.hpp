@@ -23,16 +23,9 @@ namespace lines {
 
 enum class LineMethod { parametric, dda, bresenham, wu };
 
-inline constexpr std::array<rl::Named<LineMethod>, 4> kLineMethodNames = {
-    {{LineMethod::parametric, "parametric"},
-     {LineMethod::dda, "dda"},
-     {LineMethod::bresenham, "bresenham"},
-     {LineMethod::wu, "wu"}}};
-inline constexpr std::array<LineMethod, 4> kLineMethods = rl::values_of(kLineMethodNames);
-
-inline const char* name(LineMethod value) {
-    return rl::name_in(kLineMethodNames, value);
-}
+RASTERLAB_NAMED_ENUM(LineMethod, kLineMethods, {LineMethod::parametric, "parametric"},
+                     {LineMethod::dda, "dda"}, {LineMethod::bresenham, "bresenham"},
+                     {LineMethod::wu, "wu"});
 
 // The pixel that contains a point.
 inline int pixel_of(float coordinate) {

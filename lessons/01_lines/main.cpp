@@ -18,12 +18,9 @@ int main(int argc, char** argv) {
     rl::add_model_option(app, model);
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--method", method, lines::kLineMethods, "Line algorithm");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    // Not a structured binding: clang before 16 cannot capture one in a lambda.
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("01_lines", [&] {
+    return app.run(argc, argv, "01_lines", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);  // before any work: a bad path costs nothing
         std::vector<std::string> warnings;
         const rl::Mesh mesh = rl::load_obj(model, &warnings);

@@ -31,12 +31,9 @@ int main(int argc, char** argv) {
     app.add_flag("--owners", owners,
                  "Draw a fan of 4 triangles whose spokes run through pixel centres (16x16), each "
                  "pixel in the colour of the triangle that drew it: red where two did");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    // Not a structured binding: clang before 16 cannot capture one in a lambda.
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("02_triangles", [&] {
+    return app.run(argc, argv, "02_triangles", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);  // before any work: a bad path costs nothing
         rl::check_direction("--light", light);
         if (overdraw) {

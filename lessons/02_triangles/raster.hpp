@@ -29,15 +29,8 @@ struct DrawCounts {
 
 enum class RasterMethod { scanline, bbox, edge };
 
-inline constexpr std::array<rl::Named<RasterMethod>, 3> kRasterMethodNames = {
-    {{RasterMethod::scanline, "scanline"},
-     {RasterMethod::bbox, "bbox"},
-     {RasterMethod::edge, "edge"}}};
-inline constexpr std::array<RasterMethod, 3> kRasterMethods = rl::values_of(kRasterMethodNames);
-
-inline const char* name(RasterMethod value) {
-    return rl::name_in(kRasterMethodNames, value);
-}
+RASTERLAB_NAMED_ENUM(RasterMethod, kRasterMethods, {RasterMethod::scanline, "scanline"},
+                     {RasterMethod::bbox, "bbox"}, {RasterMethod::edge, "edge"});
 
 // Fills the triangle with the chosen method. Returns false when the method
 // refused the triangle: a NaN or infinite vertex, or one farther than

@@ -22,19 +22,10 @@ enum class DepthFormat {
     logarithmic,  // log(w / near) / log(far / near) as a float
 };
 
-inline constexpr std::array<rl::Named<DepthFormat>, 7> kDepthFormatNames = {
-    {{DepthFormat::float_z, "float-z"},
-     {DepthFormat::fixed24, "fixed24"},
-     {DepthFormat::fixed16, "fixed16"},
-     {DepthFormat::reverse_z, "reverse-z"},
-     {DepthFormat::inverse_w, "inverse-w"},
-     {DepthFormat::linear_z, "linear-w"},
-     {DepthFormat::logarithmic, "log"}}};
-inline constexpr std::array<DepthFormat, 7> kDepthFormats = rl::values_of(kDepthFormatNames);
-
-inline const char* name(DepthFormat value) {
-    return rl::name_in(kDepthFormatNames, value);
-}
+RASTERLAB_NAMED_ENUM(DepthFormat, kDepthFormats, {DepthFormat::float_z, "float-z"},
+                     {DepthFormat::fixed24, "fixed24"}, {DepthFormat::fixed16, "fixed16"},
+                     {DepthFormat::reverse_z, "reverse-z"}, {DepthFormat::inverse_w, "inverse-w"},
+                     {DepthFormat::linear_z, "linear-w"}, {DepthFormat::logarithmic, "log"});
 
 struct DepthRange {
     float near_plane, far_plane;

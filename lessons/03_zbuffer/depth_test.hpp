@@ -44,15 +44,10 @@ inline float interpolate_depth(rl::vec3 weights, float z0, float z1, float z2) {
 // reverse-Z, where the near plane maps to 1; `always` draws in order, as
 // with no depth test.
 enum class DepthCompare { less, less_equal, greater, greater_equal, always };
-inline constexpr std::array<rl::Named<DepthCompare>, 5> kDepthCompareNames = {
-    {{DepthCompare::less, "less"},
-     {DepthCompare::less_equal, "less-equal"},
-     {DepthCompare::greater, "greater"},
-     {DepthCompare::greater_equal, "greater-equal"},
-     {DepthCompare::always, "always"}}};
-inline const char* name(DepthCompare value) {
-    return rl::name_in(kDepthCompareNames, value);
-}
+RASTERLAB_NAMED_ENUM(DepthCompare, kDepthCompares, {DepthCompare::less, "less"},
+                     {DepthCompare::less_equal, "less-equal"}, {DepthCompare::greater, "greater"},
+                     {DepthCompare::greater_equal, "greater-equal"},
+                     {DepthCompare::always, "always"});
 
 // Whether a fragment at depth z passes against the stored depth. A NaN z
 // passes nothing but `always`.

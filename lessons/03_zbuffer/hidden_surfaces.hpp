@@ -22,12 +22,8 @@
 namespace zbuffer {
 
 enum class HsrMethod { painter, bsp, zbuffer };
-inline constexpr std::array<rl::Named<HsrMethod>, 3> kHsrMethodNames = {
-    {{HsrMethod::painter, "painter"}, {HsrMethod::bsp, "bsp"}, {HsrMethod::zbuffer, "zbuffer"}}};
-inline constexpr std::array<HsrMethod, 3> kHsrMethods = rl::values_of(kHsrMethodNames);
-inline const char* name(HsrMethod value) {
-    return rl::name_in(kHsrMethodNames, value);
-}
+RASTERLAB_NAMED_ENUM(HsrMethod, kHsrMethods, {HsrMethod::painter, "painter"},
+                     {HsrMethod::bsp, "bsp"}, {HsrMethod::zbuffer, "zbuffer"});
 
 struct Frame {
     rl::Image colour;

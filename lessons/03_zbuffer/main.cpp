@@ -51,13 +51,10 @@ int main(int argc, char** argv) {
         ->check(rl::positive_number())
         ->capture_default_str();
     zfight->add_flag("--fitted", fitted, "Fit near and far to the planes instead");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    // Not a structured binding: clang before 16 cannot capture one in a lambda.
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-    const bool model_given = model_option->count() > 0;  // even as --model '': no such file
-
-    return rl::guarded_main("03_zbuffer", [&] {
+    return app.run(argc, argv, "03_zbuffer", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
+        const bool model_given = model_option->count() > 0;  // even as --model '': no such file
         // Every output is checked before any work and written only when all
         // are ready, so a bad --depth-out cannot cost the colour image.
         rl::ImageOutputs outputs;

@@ -36,12 +36,9 @@ int main(int argc, char** argv) {
         ->check(rl::finite_number(1e-6, 1e6))
         ->capture_default_str();
     app.add_flag("--no-light", no_light, "Texture colour only, no Lambert shading");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    // Not a structured binding: clang before 16 cannot capture one in a lambda.
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("04_textures", [&] {
+    return app.run(argc, argv, "04_textures", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);  // before any work: a bad path costs nothing
         options.uv_offset.y = options.uv_offset.x;
         options.lighting = !no_light;

@@ -25,24 +25,12 @@
 namespace textures {
 
 enum class Filter { nearest, bilinear, trilinear };
-inline constexpr std::array<rl::Named<Filter>, 3> kFilterNames = {
-    {{Filter::nearest, "nearest"},
-     {Filter::bilinear, "bilinear"},
-     {Filter::trilinear, "trilinear"}}};
-inline constexpr std::array<Filter, 3> kFilters = rl::values_of(kFilterNames);
-inline const char* name(Filter value) {
-    return rl::name_in(kFilterNames, value);
-}
+RASTERLAB_NAMED_ENUM(Filter, kFilters, {Filter::nearest, "nearest"}, {Filter::bilinear, "bilinear"},
+                     {Filter::trilinear, "trilinear"});
 
 enum class Wrap { repeat, mirror, clamp, border };
-inline constexpr std::array<rl::Named<Wrap>, 4> kWrapNames = {{{Wrap::repeat, "repeat"},
-                                                               {Wrap::mirror, "mirror"},
-                                                               {Wrap::clamp, "clamp"},
-                                                               {Wrap::border, "border"}}};
-inline constexpr std::array<Wrap, 4> kWraps = rl::values_of(kWrapNames);
-inline const char* name(Wrap value) {
-    return rl::name_in(kWrapNames, value);
-}
+RASTERLAB_NAMED_ENUM(Wrap, kWraps, {Wrap::repeat, "repeat"}, {Wrap::mirror, "mirror"},
+                     {Wrap::clamp, "clamp"}, {Wrap::border, "border"});
 
 // A texture and its mipmap chain: level 0 is the image; each next level
 // halves the size (rounding down, never below 1) and is the exact area

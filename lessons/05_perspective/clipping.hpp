@@ -31,15 +31,8 @@ namespace perspective {
 //               scissor does the rest, and few triangles are ever cut;
 //   all         the six planes of the frustum.
 enum class ClipMode { none, near, guard_band, all };
-inline constexpr std::array<rl::Named<ClipMode>, 4> kClipModeNames = {
-    {{ClipMode::none, "none"},
-     {ClipMode::near, "near"},
-     {ClipMode::guard_band, "guard-band"},
-     {ClipMode::all, "all"}}};
-inline constexpr std::array<ClipMode, 4> kClipModes = rl::values_of(kClipModeNames);
-inline const char* name(ClipMode value) {
-    return rl::name_in(kClipModeNames, value);
-}
+RASTERLAB_NAMED_ENUM(ClipMode, kClipModes, {ClipMode::none, "none"}, {ClipMode::near, "near"},
+                     {ClipMode::guard_band, "guard-band"}, {ClipMode::all, "all"});
 
 // A plane in clip space: a point p is inside when dot(plane, p) >= 0.
 using ClipPlane = rl::vec4;

@@ -19,8 +19,7 @@ int main(int argc, char** argv) {
     perspective::RenderOptions options;
     perspective::add_view_options(app, view, "floor, crate and globe from obj/");
     rl::add_image_options(app, image_options);
-    rl::add_method_option(app, "--clip", options.pipeline.clip, perspective::kClipModes,
-                          "Clipping");
+    rl::add_method_option(app, "--clip", options.pipeline.clip, perspective::kClipModes, "Clipping");
     rl::add_method_option(app, "--interpolation", options.pipeline.interpolation,
                           perspective::kInterpolations, "Interpolation of texture coordinates");
     rl::add_method_option(app, "--lod", options.lod, perspective::kLodMethods,
@@ -29,11 +28,9 @@ int main(int argc, char** argv) {
                           "Texture filter");
     bool no_light = false;
     app.add_flag("--no-light", no_light, "Texture colour only, no Lambert shading");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("05_perspective", [&] {
+    return app.run(argc, argv, "05_perspective", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
         options.light = perspective::light_direction(view);
         options.lighting = !no_light;
@@ -42,8 +39,7 @@ int main(int argc, char** argv) {
         rl::print_warnings("05_perspective", warnings);
 
         perspective::ColourTarget frame = perspective::colour_target(width, height);
-        const perspective::PipelineCounts counts =
-            perspective::render(models, camera, options, frame);
+        const perspective::PipelineCounts counts = perspective::render(models, camera, options, frame);
         rl::save_image(output, frame.colour());
         std::printf(
             "%zu models (%zu culled by their boxes): %zu faces, %zu back faces, %zu clipped, "

@@ -24,12 +24,8 @@ namespace perspective {
 // the window (what lessons 02-04 did; wrong under perspective) or linearly
 // on the surface, by interpolating varyings / w and 1 / w and dividing.
 enum class Interpolation { affine, perspective_correct };
-inline constexpr std::array<rl::Named<Interpolation>, 2> kInterpolationNames = {
-    {{Interpolation::affine, "affine"}, {Interpolation::perspective_correct, "perspective"}}};
-inline constexpr std::array<Interpolation, 2> kInterpolations = rl::values_of(kInterpolationNames);
-inline const char* name(Interpolation value) {
-    return rl::name_in(kInterpolationNames, value);
-}
+RASTERLAB_NAMED_ENUM(Interpolation, kInterpolations, {Interpolation::affine, "affine"},
+                     {Interpolation::perspective_correct, "perspective"});
 
 // What a draw may change; the defaults are what the lessons teach, the rest
 // is for the lab to compare.

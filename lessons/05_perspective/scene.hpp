@@ -63,12 +63,8 @@ ViewedScene<TexturedModel> load_scene(const ViewOptions& view, int width, int he
 // Where the mip level comes from: each pixel's own UV derivatives (exact
 // under perspective), or one affine estimate per triangle as in lesson 04.
 enum class LodMethod { pixel, triangle };
-inline constexpr std::array<rl::Named<LodMethod>, 2> kLodMethodNames = {
-    {{LodMethod::pixel, "pixel"}, {LodMethod::triangle, "triangle"}}};
-inline constexpr std::array<LodMethod, 2> kLodMethods = rl::values_of(kLodMethodNames);
-inline const char* name(LodMethod value) {
-    return rl::name_in(kLodMethodNames, value);
-}
+RASTERLAB_NAMED_ENUM(LodMethod, kLodMethods, {LodMethod::pixel, "pixel"},
+                     {LodMethod::triangle, "triangle"});
 
 struct RenderOptions {
     PipelineOptions pipeline;

@@ -48,12 +48,7 @@ const textures::TexelEncoding& srgb_texels();
 // was computed in linear units), or written as it is (naive: the light was
 // computed on the bytes' own values).
 enum class Output { srgb, naive };
-inline constexpr std::array<rl::Named<Output>, 2> kOutputNames = {
-    {{Output::srgb, "srgb"}, {Output::naive, "naive"}}};
-inline constexpr std::array<Output, 2> kOutputs = rl::values_of(kOutputNames);
-inline const char* name(Output value) {
-    return rl::name_in(kOutputNames, value);
-}
+RASTERLAB_NAMED_ENUM(Output, kOutputs, {Output::srgb, "srgb"}, {Output::naive, "naive"});
 
 rl::Rgba encode(rl::vec3 colour, Output output);
 

@@ -37,12 +37,8 @@ struct Lighting {
 };
 
 enum class Specular { phong, blinn_phong };
-inline constexpr std::array<rl::Named<Specular>, 2> kSpecularNames = {
-    {{Specular::phong, "phong"}, {Specular::blinn_phong, "blinn-phong"}}};
-inline constexpr std::array<Specular, 2> kSpeculars = rl::values_of(kSpecularNames);
-inline const char* name(Specular value) {
-    return rl::name_in(kSpecularNames, value);
-}
+RASTERLAB_NAMED_ENUM(Specular, kSpeculars, {Specular::phong, "phong"},
+                     {Specular::blinn_phong, "blinn-phong"});
 
 // [doc:reflected]
 // The light a surface point sends towards the eye, per unit of light

@@ -31,11 +31,9 @@ int main(int argc, char** argv) {
                  "Light the sRGB bytes as if they were linear and write the result as it is "
                  "(what lessons 00-05 did)");
     app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("06_shading", [&] {
+    return app.run(argc, argv, "06_shading", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
         options.output = naive ? shading::Output::naive : shading::Output::srgb;
         options.lighting = shading::default_lighting(perspective::light_direction(view));

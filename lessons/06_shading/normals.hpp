@@ -31,12 +31,8 @@ double corner_angle(const rl::Mesh& mesh, const rl::Face& face, int k);
 // area (a big face counts more), or by the angle the face makes at the
 // vertex (independent of how the surface was cut into triangles).
 enum class Weighting { area, angle };
-inline constexpr std::array<rl::Named<Weighting>, 2> kWeightingNames = {
-    {{Weighting::area, "area"}, {Weighting::angle, "angle"}}};
-inline constexpr std::array<Weighting, 2> kWeightings = rl::values_of(kWeightingNames);
-inline const char* name(Weighting value) {
-    return rl::name_in(kWeightingNames, value);
-}
+RASTERLAB_NAMED_ENUM(Weighting, kWeightings, {Weighting::area, "area"},
+                     {Weighting::angle, "angle"});
 
 // One unit normal per vertex position, averaged over the faces that use it.
 // A degenerate face (zero area, or a zero-length edge at the vertex) adds

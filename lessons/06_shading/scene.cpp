@@ -8,7 +8,7 @@ namespace shading {
 LitModel load_lit_model(const std::filesystem::path& path, const rl::mat4& transform, Output output,
                         Weighting weighting, std::vector<std::string>& warnings) {
     LitModel lit{perspective::load_model(path, transform, warnings,
-                                         output == Output::srgb ? &srgb_texels() : nullptr),
+                                      output == Output::srgb ? &srgb_texels() : nullptr),
                  {},
                  0};
     lit.normals = corner_normals(lit.model.mesh, weighting, &lit.computed_normals);
@@ -30,8 +30,8 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
 }
 
 perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
-                                              Weighting weighting, int width, int height,
-                                              std::vector<std::string>& warnings) {
+                                           Weighting weighting, int width, int height,
+                                           std::vector<std::string>& warnings) {
     const rl::TexelBudget budget;  // for the textures of all the models together
     perspective::ViewedScene<LitModel> scene;
     if (view.models.empty()) scene.models = default_scene(output, weighting, warnings);
@@ -71,9 +71,8 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
 }
 
 // [doc:render-lit]
-perspective::PipelineCounts render(const std::vector<LitModel>& models,
-                                   const perspective::Camera& camera, const ShadingOptions& options,
-                                   perspective::ColourTarget& frame) {
+perspective::PipelineCounts render(const std::vector<LitModel>& models, const perspective::Camera& camera,
+                                const ShadingOptions& options, perspective::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     textures::SamplerState sampler;

@@ -30,8 +30,8 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
 // The default scene (or the view's models, as stored) and the camera framing
 // it, as lesson 06's program draws them.
 perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
-                                              Weighting weighting, int width, int height,
-                                              std::vector<std::string>& warnings);
+                                           Weighting weighting, int width, int height,
+                                           std::vector<std::string>& warnings);
 
 struct ShadingOptions {
     perspective::PipelineOptions pipeline;
@@ -56,8 +56,7 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
                             const textures::SamplerState& sampler, bool cull_objects,
                             perspective::PipelineCounts& counts);
 
-perspective::PipelineCounts render(const std::vector<LitModel>& models,
-                                   const perspective::Camera& camera, const ShadingOptions& options,
-                                   perspective::ColourTarget& frame);
+perspective::PipelineCounts render(const std::vector<LitModel>& models, const perspective::Camera& camera,
+                                const ShadingOptions& options, perspective::ColourTarget& frame);
 
 }  // namespace shading

@@ -81,9 +81,9 @@ struct Encoded {
 // fragment's linear colour is written encoded by `output`.
 template <Shader S>
 perspective::PipelineCounts draw(const Surface& surface, const S& shader,
-                                 perspective::ColourTarget& target,
-                                 const perspective::PipelineOptions& options,
-                                 Output output = Output::srgb) {
+                              perspective::ColourTarget& target,
+                              const perspective::PipelineOptions& options,
+                              Output output = Output::srgb) {
     return perspective::draw(surface, Encoded<S>{shader, output}, target, options);
 }
 // [/doc:draw-shader]

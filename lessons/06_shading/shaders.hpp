@@ -22,15 +22,9 @@
 namespace shading {
 
 enum class ShadingModel { flat, gouraud, phong, blinn_phong };
-inline constexpr std::array<rl::Named<ShadingModel>, 4> kShadingModelNames = {
-    {{ShadingModel::flat, "flat"},
-     {ShadingModel::gouraud, "gouraud"},
-     {ShadingModel::phong, "phong"},
-     {ShadingModel::blinn_phong, "blinn-phong"}}};
-inline constexpr std::array<ShadingModel, 4> kShadingModels = rl::values_of(kShadingModelNames);
-inline const char* name(ShadingModel value) {
-    return rl::name_in(kShadingModelNames, value);
-}
+RASTERLAB_NAMED_ENUM(ShadingModel, kShadingModels, {ShadingModel::flat, "flat"},
+                     {ShadingModel::gouraud, "gouraud"}, {ShadingModel::phong, "phong"},
+                     {ShadingModel::blinn_phong, "blinn-phong"});
 
 // What every shader of this lesson reads and no vertex changes.
 struct Uniforms {
@@ -129,8 +123,8 @@ struct PhongShader {
 // [/doc:phong-shader]
 
 // Draws the surface with the chosen shading model.
-perspective::PipelineCounts draw_model(ShadingModel model, const Surface& surface,
-                                       const Uniforms& u, perspective::ColourTarget& target,
-                                       const perspective::PipelineOptions& options, Output output);
+perspective::PipelineCounts draw_model(ShadingModel model, const Surface& surface, const Uniforms& u,
+                                    perspective::ColourTarget& target,
+                                    const perspective::PipelineOptions& options, Output output);
 
 }  // namespace shading

@@ -16,11 +16,9 @@ int main(int argc, char** argv) {
     normal_mapping::MappedCli cli;
     normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
     rl::add_image_options(app, image_options);
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("07_normal_mapping", [&] {
+    return app.run(argc, argv, "07_normal_mapping", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
         const normal_mapping::RenderOptions& options = cli.options;
         const auto [models, camera] =

@@ -17,12 +17,8 @@ namespace normal_mapping {
 
 // Where the normal at a pixel comes from.
 enum class NormalMap { tangent, object, none };
-inline constexpr std::array<rl::Named<NormalMap>, 3> kNormalMapNames = {
-    {{NormalMap::tangent, "tangent"}, {NormalMap::object, "object"}, {NormalMap::none, "none"}}};
-inline constexpr std::array<NormalMap, 3> kNormalMaps = rl::values_of(kNormalMapNames);
-inline const char* name(NormalMap value) {
-    return rl::name_in(kNormalMapNames, value);
-}
+RASTERLAB_NAMED_ENUM(NormalMap, kNormalMaps, {NormalMap::tangent, "tangent"},
+                     {NormalMap::object, "object"}, {NormalMap::none, "none"});
 
 // A model's maps; each empty where the model has none. Normal and specular
 // maps hold data, not colours: their bytes are read as they are, not sRGB.

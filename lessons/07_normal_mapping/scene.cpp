@@ -50,7 +50,7 @@ perspective::Box scene_box(const std::vector<MappedModel>& models) {
 }
 
 perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
-                                                 std::vector<std::string>& warnings) {
+                                              std::vector<std::string>& warnings) {
     const rl::TexelBudget budget;  // for the textures of all the models together
     RenderOptions& options = request.options;
     options.lighting = shading::default_lighting(perspective::light_direction(request.view));
@@ -110,8 +110,8 @@ NormalMappedShader shader_for(const MappedModel& model, const shading::Placed& p
 
 // [doc:render-mapped]
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
-                                   const perspective::Camera& camera, const RenderOptions& options,
-                                   perspective::ColourTarget& frame) {
+                                const perspective::Camera& camera, const RenderOptions& options,
+                                perspective::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     textures::SamplerState sampler;  // the diffuse texture: sRGB unless naive

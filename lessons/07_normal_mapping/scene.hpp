@@ -65,7 +65,7 @@ struct MappedView {
 // camera for a width x height image. Throws std::invalid_argument (naming
 // the option) for a camera it cannot use.
 perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
-                                                 std::vector<std::string>& warnings);
+                                              std::vector<std::string>& warnings);
 
 // The models a view asks for: `default_models(warnings)` when it names
 // none, else its files as stored (the identity model matrix, with
@@ -82,7 +82,7 @@ perspective::ViewedScene<MappedModel> load_view(
 void build_mip_levels(const std::vector<MappedModel>& models);
 
 perspective::PipelineCounts render(const std::vector<MappedModel>& models,
-                                   const perspective::Camera& camera, const RenderOptions& options,
-                                   perspective::ColourTarget& frame);
+                                const perspective::Camera& camera, const RenderOptions& options,
+                                perspective::ColourTarget& frame);
 
 }  // namespace normal_mapping

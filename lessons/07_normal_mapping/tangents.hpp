@@ -24,14 +24,8 @@
 namespace normal_mapping {
 
 enum class TangentMethod { face, vertex, split };
-inline constexpr std::array<rl::Named<TangentMethod>, 3> kTangentMethodNames = {
-    {{TangentMethod::face, "face"},
-     {TangentMethod::vertex, "vertex"},
-     {TangentMethod::split, "split"}}};
-inline constexpr std::array<TangentMethod, 3> kTangentMethods = rl::values_of(kTangentMethodNames);
-inline const char* name(TangentMethod value) {
-    return rl::name_in(kTangentMethodNames, value);
-}
+RASTERLAB_NAMED_ENUM(TangentMethod, kTangentMethods, {TangentMethod::face, "face"},
+                     {TangentMethod::vertex, "vertex"}, {TangentMethod::split, "split"});
 
 // A face's T and B, as unit vectors: the directions of the solution of
 // [e1; e2] = [du1 dv1; du2 dv2] [T; B] for its edges e1, e2 and their UV

@@ -46,7 +46,7 @@ rl::mat4 orthographic(float left, float right, float bottom, float top, float ne
 }
 
 perspective::Box visible_box(const perspective::Camera& camera, float aspect,
-                             const perspective::Box& scene) {
+                          const perspective::Box& scene) {
     const rl::vec3 forward = rl::normalize(camera.target - camera.eye);
     const rl::vec3 right = rl::normalize(rl::cross(forward, camera.up));
     const rl::vec3 up = rl::cross(right, forward);

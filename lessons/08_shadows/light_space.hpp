@@ -20,20 +20,11 @@
 namespace shadows {
 
 enum class LightType { directional, spot };
-inline constexpr std::array<rl::Named<LightType>, 2> kLightTypeNames = {
-    {{LightType::directional, "directional"}, {LightType::spot, "spot"}}};
-inline constexpr std::array<LightType, 2> kLightTypes = rl::values_of(kLightTypeNames);
-inline const char* name(LightType value) {
-    return rl::name_in(kLightTypeNames, value);
-}
+RASTERLAB_NAMED_ENUM(LightType, kLightTypes, {LightType::directional, "directional"},
+                     {LightType::spot, "spot"});
 
 enum class Fit { scene, view };
-inline constexpr std::array<rl::Named<Fit>, 2> kFitNames = {
-    {{Fit::scene, "scene"}, {Fit::view, "view"}}};
-inline constexpr std::array<Fit, 2> kFits = rl::values_of(kFitNames);
-inline const char* name(Fit value) {
-    return rl::name_in(kFitNames, value);
-}
+RASTERLAB_NAMED_ENUM(Fit, kFits, {Fit::scene, "scene"}, {Fit::view, "view"});
 
 struct ShadowLight {
     LightType type = LightType::directional;
@@ -59,8 +50,7 @@ rl::mat4 orthographic(float left, float right, float bottom, float top, float ne
 
 // The part of `scene` the camera can see: the box around the view
 // frustum's eight corners, clipped to the scene's box.
-perspective::Box visible_box(const perspective::Camera& camera, float aspect,
-                             const perspective::Box& scene);
+perspective::Box visible_box(const perspective::Camera& camera, float aspect, const perspective::Box& scene);
 
 // The light's view fitted around `covered`, the receivers: a directional
 // light's orthographic box holds all its corners; a spot light's frustum

@@ -71,11 +71,9 @@ int main(int argc, char** argv) {
                           "Texture filter, for every map (lesson 04)");
     bool one_light = false;
     app.add_flag("--one-light", one_light, "Only the --light, without the dim fill light");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("08_shadows", [&] {
+    return app.run(argc, argv, "08_shadows", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
         shadows::refuse_spot_options(options.light.type, !light_position.empty(),
                                      cone->count() > 0);

@@ -58,8 +58,7 @@ LightView light_view_for(const std::vector<normal_mapping::MappedModel>& models,
                          const perspective::Camera& camera, float aspect,
                          const ShadowOptions& options) {
     const perspective::Box scene = scene_box(models);
-    perspective::Box covered =
-        options.fit == Fit::view ? visible_box(camera, aspect, scene) : scene;
+    perspective::Box covered = options.fit == Fit::view ? visible_box(camera, aspect, scene) : scene;
     if (covered.empty()) covered = scene;  // the camera sees none of it: any map will do
     if (scene.empty()) {                   // no geometry at all: a map with nothing in it
         covered.add(rl::vec3{-1, -1, -1});
@@ -89,8 +88,8 @@ SplitLighting split_lighting(const ShadowOptions& options) {
 
 // [doc:render-shadowed]
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera, const ShadowOptions& options,
-                                   const ShadowMap& map, perspective::ColourTarget& frame) {
+                                const perspective::Camera& camera, const ShadowOptions& options,
+                                const ShadowMap& map, perspective::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     return draw_shadowed(models, camera, aspect, options, map,
                          [&](const normal_mapping::MappedModel&, const shading::Surface& surface,

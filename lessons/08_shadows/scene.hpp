@@ -24,22 +24,13 @@ struct ShadowOptions {
 // or the image with nothing in the map (no shadows: lesson 07's lighting,
 // the "before" of the page's opening picture).
 enum class Show { image, shadow_map, unshadowed };
-inline constexpr std::array<rl::Named<Show>, 3> kShowNames = {
-    {{Show::image, "image"}, {Show::shadow_map, "shadow-map"}, {Show::unshadowed, "unshadowed"}}};
-inline constexpr std::array<Show, 3> kShows = rl::values_of(kShowNames);
-inline const char* name(Show value) {
-    return rl::name_in(kShowNames, value);
-}
+RASTERLAB_NAMED_ENUM(Show, kShows, {Show::image, "image"}, {Show::shadow_map, "shadow-map"},
+                     {Show::unshadowed, "unshadowed"});
 
 // The faces the map stores: those facing the light (their back faces
 // culled), or those facing away.
 enum class MapFaces { front, back };
-inline constexpr std::array<rl::Named<MapFaces>, 2> kMapFacesNames = {
-    {{MapFaces::front, "front"}, {MapFaces::back, "back"}}};
-inline constexpr std::array<MapFaces, 2> kMapFaces = rl::values_of(kMapFacesNames);
-inline const char* name(MapFaces value) {
-    return rl::name_in(kMapFacesNames, value);
-}
+RASTERLAB_NAMED_ENUM(MapFaces, kMapFaces, {MapFaces::front, "front"}, {MapFaces::back, "back"});
 inline perspective::Cull cull_for(MapFaces faces) {
     return faces == MapFaces::front ? perspective::Cull::back : perspective::Cull::front;
 }
@@ -102,9 +93,9 @@ SplitLighting split_lighting(const ShadowOptions& options);
 // draw(model, surface, shader), which returns the counts of its draw.
 template <class Draw>
 perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::MappedModel>& models,
-                                          const perspective::Camera& camera, float aspect,
-                                          const ShadowOptions& options, const ShadowMap& map,
-                                          Draw&& draw) {
+                                       const perspective::Camera& camera, float aspect,
+                                       const ShadowOptions& options, const ShadowMap& map,
+                                       Draw&& draw) {
     const normal_mapping::RenderOptions& r = options.render;
     const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
     textures::SamplerState sampler;
@@ -125,7 +116,7 @@ perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::Mapp
 
 // The second pass, into the frame.
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera, const ShadowOptions& options,
-                                   const ShadowMap& map, perspective::ColourTarget& frame);
+                                const perspective::Camera& camera, const ShadowOptions& options,
+                                const ShadowMap& map, perspective::ColourTarget& frame);
 
 }  // namespace shadows

@@ -17,16 +17,9 @@
 namespace shadows {
 
 enum class ShadowFilter { hard, pcf2, pcf3, pcf5, poisson };
-inline constexpr std::array<rl::Named<ShadowFilter>, 5> kShadowFilterNames = {
-    {{ShadowFilter::hard, "hard"},
-     {ShadowFilter::pcf2, "pcf2"},
-     {ShadowFilter::pcf3, "pcf3"},
-     {ShadowFilter::pcf5, "pcf5"},
-     {ShadowFilter::poisson, "poisson"}}};
-inline constexpr std::array<ShadowFilter, 5> kShadowFilters = rl::values_of(kShadowFilterNames);
-inline const char* name(ShadowFilter value) {
-    return rl::name_in(kShadowFilterNames, value);
-}
+RASTERLAB_NAMED_ENUM(ShadowFilter, kShadowFilters, {ShadowFilter::hard, "hard"},
+                     {ShadowFilter::pcf2, "pcf2"}, {ShadowFilter::pcf3, "pcf3"},
+                     {ShadowFilter::pcf5, "pcf5"}, {ShadowFilter::poisson, "poisson"});
 
 struct ShadowLookup {
     // 2x2: the closest to a sun-sized light in the lab (08_filters), at no measurable cost.

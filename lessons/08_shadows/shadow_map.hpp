@@ -30,10 +30,10 @@ struct ShadowMapOptions {
     // 08_resolution: each doubling halves the wrong pixels, but past 2048 the
     // map's pass outgrows the rest of the frame).
     int size = 2048;
-    float constant_bias = 0;  // added to every stored depth (window depth, 0..1)
-    float slope_bias = 1;     // times the triangle's depth change per texel
+    float constant_bias = 0;                     // added to every stored depth (window depth, 0..1)
+    float slope_bias = 1;                        // times the triangle's depth change per texel
     perspective::Cull cull = perspective::Cull::back;  // front: store the faces turned away
-    double max_samples = kMaxShadowPassSamples;        // the pass's cap (a test lowers it)
+    double max_samples = kMaxShadowPassSamples;  // the pass's cap (a test lowers it)
 };
 
 struct ShadowMap {

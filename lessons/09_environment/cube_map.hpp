@@ -20,16 +20,8 @@ namespace environment {
 
 // The faces in OpenGL's order: +x, -x, +y, -y, +z, -z.
 enum class Face { px, nx, py, ny, pz, nz };
-inline constexpr std::array<rl::Named<Face>, 6> kFaceNames = {{{Face::px, "+x"},
-                                                               {Face::nx, "-x"},
-                                                               {Face::py, "+y"},
-                                                               {Face::ny, "-y"},
-                                                               {Face::pz, "+z"},
-                                                               {Face::nz, "-z"}}};
-inline constexpr std::array<Face, 6> kFaces = rl::values_of(kFaceNames);
-inline const char* name(Face value) {
-    return rl::name_in(kFaceNames, value);
-}
+RASTERLAB_NAMED_ENUM(Face, kFaces, {Face::px, "+x"}, {Face::nx, "-x"}, {Face::py, "+y"},
+                     {Face::ny, "-y"}, {Face::pz, "+z"}, {Face::nz, "-z"});
 
 // A place on a face: (u, v) in [0, 1]², v up, each face as seen from
 // inside the cube (a face's image reads the right way round).

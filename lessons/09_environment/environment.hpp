@@ -17,12 +17,7 @@
 namespace environment {
 
 enum class Layout { cube, latlong };
-inline constexpr std::array<rl::Named<Layout>, 2> kLayoutNames = {
-    {{Layout::cube, "cube"}, {Layout::latlong, "latlong"}}};
-inline constexpr std::array<Layout, 2> kLayouts = rl::values_of(kLayoutNames);
-inline const char* name(Layout value) {
-    return rl::name_in(kLayoutNames, value);
-}
+RASTERLAB_NAMED_ENUM(Layout, kLayouts, {Layout::cube, "cube"}, {Layout::latlong, "latlong"});
 
 // Rays per side a texel of a built map averages: 4 on small maps, 2 from
 // 256 texels up, where the sun's disc (2 degrees in radius) already spans

@@ -22,16 +22,9 @@
 namespace environment {
 
 enum class Material { mirror, glass, diffuse, rough_metal, plastic };
-inline constexpr std::array<rl::Named<Material>, 5> kMaterialNames = {
-    {{Material::mirror, "mirror"},
-     {Material::glass, "glass"},
-     {Material::diffuse, "diffuse"},
-     {Material::rough_metal, "rough-metal"},
-     {Material::plastic, "plastic"}}};
-inline constexpr std::array<Material, 5> kMaterials = rl::values_of(kMaterialNames);
-inline const char* name(Material value) {
-    return rl::name_in(kMaterialNames, value);
-}
+RASTERLAB_NAMED_ENUM(Material, kMaterials, {Material::mirror, "mirror"}, {Material::glass, "glass"},
+                     {Material::diffuse, "diffuse"}, {Material::rough_metal, "rough-metal"},
+                     {Material::plastic, "plastic"});
 inline bool is_glossy(Material m) {
     return m == Material::rough_metal || m == Material::plastic;
 }
@@ -39,23 +32,14 @@ inline bool is_glossy(Material m) {
 // How a glossy surface gathers its light: the split sum's two look-ups, or
 // `samples` GGX rays into the map at each pixel (the reference).
 enum class Glossy { split_sum, monte_carlo };
-inline constexpr std::array<rl::Named<Glossy>, 2> kGlossyNames = {
-    {{Glossy::split_sum, "split-sum"}, {Glossy::monte_carlo, "monte-carlo"}}};
-inline constexpr std::array<Glossy, 2> kGlossies = rl::values_of(kGlossyNames);
-inline const char* name(Glossy value) {
-    return rl::name_in(kGlossyNames, value);
-}
+RASTERLAB_NAMED_ENUM(Glossy, kGlossies, {Glossy::split_sum, "split-sum"},
+                     {Glossy::monte_carlo, "monte-carlo"});
 
 // Which direction the split sum reads its blurred maps along: the mirror
 // direction (as the prefilter assumed), or the lobe's dominant direction,
 // leaning towards the normal the rougher the surface.
 enum class Lookup { dominant, mirror };
-inline constexpr std::array<rl::Named<Lookup>, 2> kLookupNames = {
-    {{Lookup::dominant, "dominant"}, {Lookup::mirror, "mirror"}}};
-inline constexpr std::array<Lookup, 2> kLookups = rl::values_of(kLookupNames);
-inline const char* name(Lookup value) {
-    return rl::name_in(kLookupNames, value);
-}
+RASTERLAB_NAMED_ENUM(Lookup, kLookups, {Lookup::dominant, "dominant"}, {Lookup::mirror, "mirror"});
 
 inline constexpr float kGlassIor = 1.5f;
 // Gold's head-on reflectance in linear RGB (the rough metal's), and a
@@ -163,8 +147,8 @@ struct EnvironmentShader {
     // [doc:glossy-shader]
     // Cook-Torrance's reflection of the environment, plus (for a plastic)
     // the albedo's diffuse light under it: what the specular layer lets through.
-    rl::vec3 glossy(const perspective::Fragment<Varyings>& f, rl::vec3 n, rl::vec3 to_eye,
-                    rl::vec3 r, rl::vec3 f0, rl::vec3 albedo) const {
+    rl::vec3 glossy(const perspective::Fragment<Varyings>& f, rl::vec3 n, rl::vec3 to_eye, rl::vec3 r,
+                    rl::vec3 f0, rl::vec3 albedo) const {
         // A broken model's zero or NaN normal: the surface faces the eye.
         if (!(rl::dot(n, n) > 0.5f)) n = to_eye, r = to_eye;
         const float n_dot_v = std::max(rl::dot(n, to_eye), 1e-4f);

@@ -63,16 +63,9 @@ rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source,
 
 // How a render finds E at a pixel.
 enum class Irradiance { sh1, sh2, sh3, convolved, monte_carlo };
-inline constexpr std::array<rl::Named<Irradiance>, 5> kIrradianceNames = {
-    {{Irradiance::sh1, "sh1"},
-     {Irradiance::sh2, "sh2"},
-     {Irradiance::sh3, "sh3"},
-     {Irradiance::convolved, "convolved"},
-     {Irradiance::monte_carlo, "monte-carlo"}}};
-inline constexpr std::array<Irradiance, 5> kIrradiances = rl::values_of(kIrradianceNames);
-inline const char* name(Irradiance value) {
-    return rl::name_in(kIrradianceNames, value);
-}
+RASTERLAB_NAMED_ENUM(Irradiance, kIrradiances, {Irradiance::sh1, "sh1"}, {Irradiance::sh2, "sh2"},
+                     {Irradiance::sh3, "sh3"}, {Irradiance::convolved, "convolved"},
+                     {Irradiance::monte_carlo, "monte-carlo"});
 
 // The most Monte Carlo rays a pixel may take.
 inline constexpr int kMaxIrradianceSamples = 65536;

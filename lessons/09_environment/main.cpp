@@ -116,11 +116,9 @@ int main(int argc, char** argv) {
                    "the blurred maps) as Radiance .hdr files into this existing folder");
     bool no_skybox = false;
     app.add_flag("--no-skybox", no_skybox, "Leave the background black instead of the sky");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("09_environment", [&] {
+    return app.run(argc, argv, "09_environment", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::ImageOutputs outputs;
         outputs.check(output);
         options.skybox = !no_skybox;

@@ -14,14 +14,8 @@
 namespace environment {
 
 enum class MapFilter { nearest, bilinear, seamless, trilinear };
-inline constexpr std::array<rl::Named<MapFilter>, 4> kMapFilterNames = {
-    {{MapFilter::nearest, "nearest"},
-     {MapFilter::bilinear, "bilinear"},
-     {MapFilter::seamless, "seamless"},
-     {MapFilter::trilinear, "trilinear"}}};
-inline constexpr std::array<MapFilter, 4> kMapFilters = rl::values_of(kMapFilterNames);
-inline const char* name(MapFilter value) {
-    return rl::name_in(kMapFilterNames, value);
-}
+RASTERLAB_NAMED_ENUM(MapFilter, kMapFilters, {MapFilter::nearest, "nearest"},
+                     {MapFilter::bilinear, "bilinear"}, {MapFilter::seamless, "seamless"},
+                     {MapFilter::trilinear, "trilinear"});
 
 }  // namespace environment

@@ -152,8 +152,8 @@ EnvironmentLight PreparedLight::light() const {
 }
 
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera, const PreparedLight& light,
-                                   const RenderOptions& options, LightTarget& frame) {
+                                const perspective::Camera& camera, const PreparedLight& light,
+                                const RenderOptions& options, LightTarget& frame) {
     bool monte_carlo = false;
     for (std::size_t i = 0; i < models.size(); ++i) {
         const SurfaceMaterial m = material_of(options, i);
@@ -184,18 +184,17 @@ perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel
             m.lit, view_projection, camera, surfaces.lighting, sampler, true, counts);
         if (!p) continue;
         counts += perspective::draw(p->surface,
-                                    EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces),
-                                                      light.light(), material_of(options, i)},
-                                    frame, options.pipeline);
+                                 EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces),
+                                                   light.light(), material_of(options, i)},
+                                 frame, options.pipeline);
     }
     if (options.skybox) draw_skybox(light.environment(), camera, frame);
     return counts;
 }
 
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera,
-                                   const Environment& environment, const RenderOptions& options,
-                                   LightTarget& frame) {
+                                const perspective::Camera& camera, const Environment& environment,
+                                const RenderOptions& options, LightTarget& frame) {
     return render(models, camera, PreparedLight(environment, options, models.size()), options,
                   frame);
 }

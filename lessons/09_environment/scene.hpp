@@ -87,8 +87,7 @@ class PixelRays {
     float width_, height_;
 };
 
-inline rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x,
-                          float y) {
+inline rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x, float y) {
     return PixelRays(camera, width, height).ray(x, y);
 }
 
@@ -127,12 +126,11 @@ inline constexpr long long kMaxMonteCarloRays = 1LL << 30;
 // std::invalid_argument, before drawing, when a material uses Monte Carlo
 // and the frame's pixels times options.samples exceed kMaxMonteCarloRays.
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera, const PreparedLight& light,
-                                   const RenderOptions& options, LightTarget& frame);
+                                const perspective::Camera& camera, const PreparedLight& light,
+                                const RenderOptions& options, LightTarget& frame);
 // The same, preparing the light first.
 perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera,
-                                   const Environment& environment, const RenderOptions& options,
-                                   LightTarget& frame);
+                                const perspective::Camera& camera, const Environment& environment,
+                                const RenderOptions& options, LightTarget& frame);
 
 }  // namespace environment

@@ -51,12 +51,8 @@ struct Studio {
 // `white`: radiance 1 from every direction, the "white furnace": a surface
 // that neither makes nor loses light vanishes into it.
 enum class Analytic { sky, studio, white };
-inline constexpr std::array<rl::Named<Analytic>, 3> kAnalyticNames = {
-    {{Analytic::sky, "sky"}, {Analytic::studio, "studio"}, {Analytic::white, "white"}}};
-inline constexpr std::array<Analytic, 3> kAnalytics = rl::values_of(kAnalyticNames);
-inline const char* name(Analytic value) {
-    return rl::name_in(kAnalyticNames, value);
-}
+RASTERLAB_NAMED_ENUM(Analytic, kAnalytics, {Analytic::sky, "sky"}, {Analytic::studio, "studio"},
+                     {Analytic::white, "white"});
 
 // The radiance arriving from `direction` (any length but zero; made unit
 // here). A zero or non-finite direction gives black.

@@ -20,12 +20,8 @@ namespace environment {
 // reinhard: c / (1 + c), never reaching 1; aces: the curve fitted to the
 // film industry's ACES reference (Narkowicz, 2015), a toe and a shoulder.
 enum class ToneMap { clamp, reinhard, aces };
-inline constexpr std::array<rl::Named<ToneMap>, 3> kToneMapNames = {
-    {{ToneMap::clamp, "clamp"}, {ToneMap::reinhard, "reinhard"}, {ToneMap::aces, "aces"}}};
-inline constexpr std::array<ToneMap, 3> kToneMaps = rl::values_of(kToneMapNames);
-inline const char* name(ToneMap value) {
-    return rl::name_in(kToneMapNames, value);
-}
+RASTERLAB_NAMED_ENUM(ToneMap, kToneMaps, {ToneMap::clamp, "clamp"}, {ToneMap::reinhard, "reinhard"},
+                     {ToneMap::aces, "aces"});
 
 // What the frame keeps between drawing and the tone map: float light (HDR,
 // no upper limit), or what a render target of bytes would keep (no HDR):
@@ -33,12 +29,8 @@ inline const char* name(ToneMap value) {
 // to 1. Linear bytes are coarse in the dark: their first step above black
 // is already 13 of 255 once encoded to sRGB, so dark gradients band.
 enum class FrameStore { float_light, bytes };
-inline constexpr std::array<rl::Named<FrameStore>, 2> kFrameStoreNames = {
-    {{FrameStore::float_light, "float"}, {FrameStore::bytes, "bytes"}}};
-inline constexpr std::array<FrameStore, 2> kFrameStores = rl::values_of(kFrameStoreNames);
-inline const char* name(FrameStore value) {
-    return rl::name_in(kFrameStoreNames, value);
-}
+RASTERLAB_NAMED_ENUM(FrameStore, kFrameStores, {FrameStore::float_light, "float"},
+                     {FrameStore::bytes, "bytes"});
 
 struct Exposure {
     ToneMap curve = ToneMap::aces;

@@ -25,19 +25,12 @@ namespace occlusion {
 // AO, Jimenez et al. 2016). baked: not from the screen; rays cast from
 // every vertex at load time (baked_ao.hpp), `samples` rays each.
 enum class AoMethod { none, crytek, hemisphere, horizon, baked };
-inline constexpr std::array<rl::Named<AoMethod>, 5> kAoMethodNames = {
-    {{AoMethod::none, "none"},
-     {AoMethod::crytek, "crytek"},
-     {AoMethod::hemisphere, "hemisphere"},
-     {AoMethod::horizon, "horizon"},
-     {AoMethod::baked, "baked"}}};
-inline constexpr std::array<AoMethod, 5> kAoMethods = rl::values_of(kAoMethodNames);
+RASTERLAB_NAMED_ENUM(AoMethod, kAoMethods, {AoMethod::none, "none"}, {AoMethod::crytek, "crytek"},
+                     {AoMethod::hemisphere, "hemisphere"}, {AoMethod::horizon, "horizon"},
+                     {AoMethod::baked, "baked"});
 // The methods that read the screen (the G-buffer) alone.
 inline constexpr std::array<AoMethod, 3> kScreenSpaceAoMethods = {
     AoMethod::crytek, AoMethod::hemisphere, AoMethod::horizon};
-inline const char* name(AoMethod value) {
-    return rl::name_in(kAoMethodNames, value);
-}
 
 inline constexpr int kMaxAoSamples = 1024;
 inline constexpr int kMaxBlurRadius = 8;

@@ -78,7 +78,7 @@ rl::FloatImage draw_baked(const std::vector<normal_mapping::MappedModel>& models
             const shadows::ShadowedShader& shader) {
             const auto i = static_cast<std::size_t>(&m - models.data());
             return perspective::draw(surface, BakedShader{shader, baked.corners.at(i)}, target,
-                                     options.render.pipeline);
+                                  options.render.pipeline);
         });
     return std::move(target.colour<0>());
 }

@@ -34,8 +34,7 @@ struct GBufferShader {
     perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return lit.vertex(in);
     }
-    std::tuple<rl::vec3, rl::vec3, rl::vec3> fragment(
-        const perspective::Fragment<Varyings>& f) const {
+    std::tuple<rl::vec3, rl::vec3, rl::vec3> fragment(const perspective::Fragment<Varyings>& f) const {
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         return {lit.fragment(f), lit.surface.u.albedo(f.varyings.uv, dx, dy),
                 rl::normalize(f.varyings.normal)};

@@ -52,9 +52,8 @@ void refuse_unused_options(const AoOptions& ao, bool environment, Show show,
                        : shown + " shows no light");
 }
 
-Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const SceneOptions& options, int width, int height,
-             const BakedAo* baked) {
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+             const SceneOptions& options, int width, int height, const BakedAo* baked) {
     check(options.ao);
     check_frame_size(width, height);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);

@@ -28,17 +28,9 @@ inline constexpr rl::vec3 kAmbient{0.30f, 0.32f, 0.36f};
 // light, the albedo, the normal as colour (n + 1) / 2, the view depth as
 // grey from near, white, to far, black).
 enum class Show { image, ao, unoccluded, direct, albedo, normal, depth };
-inline constexpr std::array<rl::Named<Show>, 7> kShowNames = {{{Show::image, "image"},
-                                                               {Show::ao, "ao"},
-                                                               {Show::unoccluded, "unoccluded"},
-                                                               {Show::direct, "direct"},
-                                                               {Show::albedo, "albedo"},
-                                                               {Show::normal, "normal"},
-                                                               {Show::depth, "depth"}}};
-inline constexpr std::array<Show, 7> kShows = rl::values_of(kShowNames);
-inline const char* name(Show value) {
-    return rl::name_in(kShowNames, value);
-}
+RASTERLAB_NAMED_ENUM(Show, kShows, {Show::image, "image"}, {Show::ao, "ao"},
+                     {Show::unoccluded, "unoccluded"}, {Show::direct, "direct"},
+                     {Show::albedo, "albedo"}, {Show::normal, "normal"}, {Show::depth, "depth"});
 
 // Light from an environment (lesson 09) in place of lesson 08's lights:
 // each point's diffuse light, albedo / pi x the irradiance E(n), is what the
@@ -111,9 +103,8 @@ void refuse_unused_options(const AoOptions& ao, bool environment, Show show,
 // Both passes and the occlusion, for `camera` at width x height. The baked
 // method reads `baked` (bake_vertex_ao with the same radius), or bakes
 // here, within the frame, when given none.
-Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const SceneOptions& options, int width, int height,
-             const BakedAo* baked = nullptr);
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+             const SceneOptions& options, int width, int height, const BakedAo* baked = nullptr);
 
 // [doc:compose]
 // The light at pixel (x, y) of a model, linear, with `open` its occlusion:

@@ -69,8 +69,8 @@ struct Supersampling {
                 triangles::rasterize(options.raster, t.screen(offsets[static_cast<std::size_t>(s)]),
                                      sampling.rect, [&](int x, int y, rl::vec3 b) {
                                          const float z = perspective::window_depth(t, b, bias);
-                                         perspective::fragment_operations(
-                                             program, t, x, y, z, b, target, n * x + s, counts);
+                                         perspective::fragment_operations(program, t, x, y, z, b,
+                                                                       target, n * x + s, counts);
                                      });
         return ok;
     }
@@ -83,12 +83,8 @@ struct Supersampling {
 // centroid of the samples the triangle covers (always inside the triangle,
 // for a convex pattern).
 enum class ShadeAt { centre, centroid };
-inline constexpr std::array<rl::Named<ShadeAt>, 2> kShadeAtNames = {
-    {{ShadeAt::centre, "centre"}, {ShadeAt::centroid, "centroid"}}};
-inline constexpr std::array<ShadeAt, 2> kShadeAts = rl::values_of(kShadeAtNames);
-inline const char* name(ShadeAt value) {
-    return rl::name_in(kShadeAtNames, value);
-}
+RASTERLAB_NAMED_ENUM(ShadeAt, kShadeAts, {ShadeAt::centre, "centre"},
+                     {ShadeAt::centroid, "centroid"});
 
 // The pixels whose samples a triangle may cover, within `rect`: its
 // bounding box grown by a pixel on every side (samples lie up to half a
@@ -189,13 +185,13 @@ struct Multisampling {
                                                            static_cast<float>(y) + 0.5f + where.y},
                                                           area2);
                 const float z = perspective::window_depth(t, b, sampling.bias);
-                const auto out = perspective::shade(
-                    program, perspective::fragment_at(t, x, y, z, b), target, counts);
+                const auto out =
+                    perspective::shade(program, perspective::fragment_at(t, x, y, z, b), target, counts);
                 if (!out) continue;
                 for (int s = 0; s < sampling.n; ++s)
                     if (samples.passed & (SampleMask{1} << s)) {
                         perspective::write_sample(target, sampling.n * x + s, y, samples.depth[s],
-                                                  *out);
+                                               *out);
                         ++counts.stored;
                     }
             }

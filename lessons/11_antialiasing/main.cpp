@@ -61,11 +61,9 @@ int main(int argc, char** argv) {
                           normal_mapping::kNormalMaps, "Normal map to use (lesson 07)");
     rl::add_method_option(app, "--tangents", tangents, normal_mapping::kTangentMethods,
                           "Tangent frames of the --model files (lesson 07)");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("11_antialiasing", [&] {
+    return app.run(argc, argv, "11_antialiasing", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
         // Options the method would ignore are refused, not ignored.
         antialiasing::refuse_unused_options(options, {.samples = samples->count() > 0,

@@ -20,12 +20,7 @@ namespace antialiasing {
 // weighted by (1 - |dx|)(1 - |dy|): a filter twice as wide, which smooths
 // steps further and blurs a little.
 enum class Resolve { box, tent };
-inline constexpr std::array<rl::Named<Resolve>, 2> kResolveNames = {
-    {{Resolve::box, "box"}, {Resolve::tent, "tent"}}};
-inline constexpr std::array<Resolve, 2> kResolves = rl::values_of(kResolveNames);
-inline const char* name(Resolve value) {
-    return rl::name_in(kResolveNames, value);
-}
+RASTERLAB_NAMED_ENUM(Resolve, kResolves, {Resolve::box, "box"}, {Resolve::tent, "tent"});
 
 // The picture from an attachment of offsets.size() samples a pixel, stored
 // side by side (sample s of pixel (x, y) at (x * samples + s, y)).

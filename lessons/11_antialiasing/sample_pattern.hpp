@@ -22,12 +22,8 @@ namespace antialiasing {
 // which GPUs share; like the rotated grid, each has as many distinct rows
 // and columns as samples (its 4 is the rotated grid's mirror image).
 enum class Pattern { grid, rotated, standard };
-inline constexpr std::array<rl::Named<Pattern>, 3> kPatternNames = {
-    {{Pattern::grid, "grid"}, {Pattern::rotated, "rotated"}, {Pattern::standard, "standard"}}};
-inline constexpr std::array<Pattern, 3> kPatterns = rl::values_of(kPatternNames);
-inline const char* name(Pattern value) {
-    return rl::name_in(kPatternNames, value);
-}
+RASTERLAB_NAMED_ENUM(Pattern, kPatterns, {Pattern::grid, "grid"}, {Pattern::rotated, "rotated"},
+                     {Pattern::standard, "standard"});
 
 inline constexpr int kMaxSamples = 16;
 

@@ -150,9 +150,9 @@ perspective::Camera orbit(perspective::Camera c, double degrees) {
     return c;
 }
 
-Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
-             const AaOptions& options, int width, int height) {
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+             const shadows::ShadowOptions& shadow, const AaOptions& options, int width,
+             int height) {
     check(options);
     const std::vector<rl::vec2> offsets = offsets_of(options);
     Frame f;

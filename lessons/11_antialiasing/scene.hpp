@@ -21,14 +21,8 @@ namespace antialiasing {
 // depth per sample, one shading a pixel per triangle. post: one sample a
 // pixel, then the edge filter of post_filter.hpp on the picture.
 enum class Method { none, ssaa, msaa, post };
-inline constexpr std::array<rl::Named<Method>, 4> kMethodNames = {{{Method::none, "none"},
-                                                                   {Method::ssaa, "ssaa"},
-                                                                   {Method::msaa, "msaa"},
-                                                                   {Method::post, "post"}}};
-inline constexpr std::array<Method, 4> kMethods = rl::values_of(kMethodNames);
-inline const char* name(Method value) {
-    return rl::name_in(kMethodNames, value);
-}
+RASTERLAB_NAMED_ENUM(Method, kMethods, {Method::none, "none"}, {Method::ssaa, "ssaa"},
+                     {Method::msaa, "msaa"}, {Method::post, "post"});
 
 // Between the samples and the bytes. none: the light is encoded as it
 // is, clamped at 1 (lessons 05-10's way). after_resolve: lesson 09's tone
@@ -38,14 +32,9 @@ inline const char* name(Method value) {
 // surface meets a dark one: a sample worth 16 times white tone-maps to
 // about 1, so after_resolve lets one bright sample in four whiten the pixel.
 enum class ToneOrder { none, after_resolve, before_resolve };
-inline constexpr std::array<rl::Named<ToneOrder>, 3> kToneOrderNames = {
-    {{ToneOrder::none, "none"},
-     {ToneOrder::after_resolve, "after-resolve"},
-     {ToneOrder::before_resolve, "before-resolve"}}};
-inline constexpr std::array<ToneOrder, 3> kToneOrders = rl::values_of(kToneOrderNames);
-inline const char* name(ToneOrder value) {
-    return rl::name_in(kToneOrderNames, value);
-}
+RASTERLAB_NAMED_ENUM(ToneOrder, kToneOrders, {ToneOrder::none, "none"},
+                     {ToneOrder::after_resolve, "after-resolve"},
+                     {ToneOrder::before_resolve, "before-resolve"});
 
 struct AaOptions {
     Method method = Method::msaa;
@@ -99,9 +88,8 @@ struct Frame {
 
 // Lesson 08's two passes, the second through the options' coverage policy,
 // then the resolve.
-Frame render(const std::vector<normal_mapping::MappedModel>& models,
-             const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
-             const AaOptions& options, int width, int height);
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+             const shadows::ShadowOptions& shadow, const AaOptions& options, int width, int height);
 
 // What render() draws before its resolve: every sample of the frame, for
 // explicit offsets (the lab's truth draws 256 a pixel as 16 frames of 16).

@@ -198,14 +198,92 @@ HWY_INLINE SlotRange slots_of(BlockRows rows, std::size_t n) {
 // lesson 07 does).
 HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3], MF active);
 
-void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
-    const DF df;
+// The depth pass over the slots of one block a triangle may cover: depth
+// and id stored where the triangle is nearer (and, without shade_once, its
+// colour). True where any pixel passed.
+HWY_INLINE bool depth_pass(DF df, const TileWork& work, const FastTriangle& t, std::uint32_t index,
+                           std::uint64_t coverage, const BlockWeights& w, SlotRange slots,
+                           std::size_t base, TileBuffers& buffers, TileCounts& counts) {
     const DU du;
     const std::size_t n = hn::Lanes(df);
+    float* depth = buffers.depth.get() + base;
+    std::uint32_t* id = buffers.id.get() + base;
+    bool changed = false;
+    for (int first = slots.first; first < slots.end; first += static_cast<int>(n)) {
+        // [doc:depth-pass]
+        const MF covered = mask_of(df, coverage, first);
+        if (hn::AllFalse(df, covered)) continue;
+        VF b[3];
+        weights_at(df, t, w, first, b);
+        // Lesson 03's interpolate_depth: linear in the weights,
+        // clamped to the vertices' range.
+        VF z =
+            hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.z[0])), hn::Mul(b[1], hn::Set(df, t.z[1]))),
+                    hn::Mul(b[2], hn::Set(df, t.z[2])));
+        z = hn::Min(hn::Max(z, hn::Set(df, t.z_min)), hn::Set(df, t.z_max));
+        // Lesson 05's window_depth: a shadow map's bias, kept in [0, 1].
+        if (t.depth_bias != 0)
+            z = hn::Min(hn::Max(hn::Add(z, hn::Set(df, t.depth_bias)), hn::Zero(df)),
+                        hn::Set(df, 1.0f));
+        const VF old = hn::Load(df, depth + first);
+        const MF pass = hn::And(covered, hn::Lt(z, old));
+        if (hn::AllFalse(df, pass)) continue;
+        changed = true;
+        counts.depth_passed += hn::CountTrue(df, pass);
+        hn::Store(hn::IfThenElse(pass, z, old), df, depth + first);
+        const auto pass_u = hn::RebindMask(du, pass);
+        const VU old_id = hn::Load(du, id + first);
+        hn::Store(hn::IfThenElse(pass_u, hn::Set(du, index), old_id), du, id + first);
+        // [/doc:depth-pass]
+        if (!work.techniques.shade_once) {
+            std::uint32_t* colour = buffers.colour.get() + base + first;
+            const VU rgba = shade(df, work.materials[t.model], t, b, pass);
+            hn::Store(hn::IfThenElse(pass_u, rgba, hn::Load(du, colour)), du, colour);
+            counts.shaded += hn::CountTrue(df, pass);
+            counts.lanes += n;
+        }
+    }
+    return changed;
+}
+
+// The farthest depth left in a block's 64 pixels (its bound for the
+// hierarchical depth test).
+HWY_INLINE float farthest_in_block(DF df, const float* depth) {
+    VF far = hn::Load(df, depth);
+    for (std::size_t first = hn::Lanes(df); first < 64; first += hn::Lanes(df))
+        far = hn::Max(far, hn::Load(df, depth + first));
+    return hn::GetLane(hn::MaxOfLanes(df, far));
+}
+
+// One triangle over one 8x8 block of the tile (bx, by in blocks): skipped
+// whole where every pixel is already nearer or none is covered, else the
+// depth pass over the slots it may cover, and the block's bound updated.
+HWY_INLINE void rasterize_block(DF df, const TileWork& work, const FastTriangle& t,
+                                std::uint32_t index, int bx, int by, TileBuffers& buffers,
+                                TileCounts& counts) {
     const Techniques& use = work.techniques;
-    const int blocks_per_row = buffers.size / kBlock;
-    std::fill(buffers.depth.get(), buffers.depth.get() + buffers.pixels,
-              1.0f);  // the depth state's clear
+    const std::size_t block = static_cast<std::size_t>(by * (buffers.size / kBlock) + bx);
+    // The test is `less`: nothing passes where every pixel is already
+    // nearer than the triangle's nearest point.
+    if (use.hierarchical_depth && t.z_nearest >= buffers.block_far[block]) {
+        ++counts.blocks_occluded;
+        return;
+    }
+    const int ox = work.x0 + bx * kBlock, oy = work.y0 + by * kBlock;
+    const BlockRows rows = rows_of(t, oy, use);
+    const std::uint64_t coverage = block_coverage(t, ox, oy, rows, use.coarse_blocks, counts);
+    if (coverage == 0) return;
+    const std::size_t base = block * 64;
+    const bool changed = depth_pass(df, work, t, index, coverage, block_weights(t, ox, oy),
+                                    slots_of(rows, hn::Lanes(df)), base, buffers, counts);
+    if (use.hierarchical_depth && changed)
+        buffers.block_far[block] = farthest_in_block(df, buffers.depth.get() + base);
+}
+
+void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
+    const DF df;
+    // The depth state's clear, no triangle anywhere, every block's bound the far plane.
+    std::fill(buffers.depth.get(), buffers.depth.get() + buffers.pixels, 1.0f);
     std::fill(buffers.id.get(), buffers.id.get() + buffers.pixels, kNoTriangle);
     std::fill(buffers.block_far.begin(), buffers.block_far.end(), 1.0f);
     const TriangleChunks& triangles = *work.triangles;
@@ -215,66 +293,8 @@ void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& count
         const FastTriangle& t = triangles.at(index, piece);
         const BlockRange r = blocks_of(t, work);
         for (int by = r.first_y; by <= r.last_y; ++by)
-            for (int bx = r.first_x; bx <= r.last_x; ++bx) {
-                const std::size_t block = static_cast<std::size_t>(by * blocks_per_row + bx);
-                // The test is `less`: nothing passes where every pixel is
-                // already nearer than the triangle's nearest point.
-                if (use.hierarchical_depth && t.z_nearest >= buffers.block_far[block]) {
-                    ++counts.blocks_occluded;
-                    continue;
-                }
-                const int ox = work.x0 + bx * kBlock, oy = work.y0 + by * kBlock;
-                const BlockRows rows = rows_of(t, oy, use);
-                const std::uint64_t coverage =
-                    block_coverage(t, ox, oy, rows, use.coarse_blocks, counts);
-                if (coverage == 0) continue;
-                const BlockWeights w = block_weights(t, ox, oy);
-                const std::size_t base = block * 64;
-                float* depth = buffers.depth.get() + base;
-                std::uint32_t* id = buffers.id.get() + base;
-                bool changed = false;
-                const SlotRange slots = slots_of(rows, n);
-                for (int first = slots.first; first < slots.end; first += static_cast<int>(n)) {
-                    // [doc:depth-pass]
-                    const MF covered = mask_of(df, coverage, first);
-                    if (hn::AllFalse(df, covered)) continue;
-                    VF b[3];
-                    weights_at(df, t, w, first, b);
-                    // Lesson 03's interpolate_depth: linear in the weights,
-                    // clamped to the vertices' range.
-                    VF z = hn::Add(hn::Add(hn::Mul(b[0], hn::Set(df, t.z[0])),
-                                           hn::Mul(b[1], hn::Set(df, t.z[1]))),
-                                   hn::Mul(b[2], hn::Set(df, t.z[2])));
-                    z = hn::Min(hn::Max(z, hn::Set(df, t.z_min)), hn::Set(df, t.z_max));
-                    // Lesson 05's window_depth: a shadow map's bias, kept in [0, 1].
-                    if (t.depth_bias != 0)
-                        z = hn::Min(hn::Max(hn::Add(z, hn::Set(df, t.depth_bias)), hn::Zero(df)),
-                                    hn::Set(df, 1.0f));
-                    const VF old = hn::Load(df, depth + first);
-                    const MF pass = hn::And(covered, hn::Lt(z, old));
-                    if (hn::AllFalse(df, pass)) continue;
-                    changed = true;
-                    counts.depth_passed += hn::CountTrue(df, pass);
-                    hn::Store(hn::IfThenElse(pass, z, old), df, depth + first);
-                    const auto pass_u = hn::RebindMask(du, pass);
-                    const VU old_id = hn::Load(du, id + first);
-                    hn::Store(hn::IfThenElse(pass_u, hn::Set(du, index), old_id), du, id + first);
-                    // [/doc:depth-pass]
-                    if (!use.shade_once) {
-                        std::uint32_t* colour = buffers.colour.get() + base + first;
-                        const VU rgba = shade(df, work.materials[t.model], t, b, pass);
-                        hn::Store(hn::IfThenElse(pass_u, rgba, hn::Load(du, colour)), du, colour);
-                        counts.shaded += hn::CountTrue(df, pass);
-                        counts.lanes += n;
-                    }
-                }
-                if (use.hierarchical_depth && changed) {
-                    VF far = hn::Load(df, depth);
-                    for (std::size_t first = n; first < 64; first += n)
-                        far = hn::Max(far, hn::Load(df, depth + first));
-                    buffers.block_far[block] = hn::GetLane(hn::MaxOfLanes(df, far));
-                }
-            }
+            for (int bx = r.first_x; bx <= r.last_x; ++bx)
+                rasterize_block(df, work, t, index, bx, by, buffers, counts);
     }
 }
 

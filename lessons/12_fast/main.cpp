@@ -48,11 +48,9 @@ int main(int argc, char** argv) {
     std::string peer_output;
     app.add_option("--peer-output", peer_output, "Also write llvmpipe's last frame here")
         ->excludes(no_peer);
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const std::string& output = image_options.output;
-    const int width = image_options.width, height = image_options.height;
-
-    return rl::guarded_main("12_fast", [&] {
+    return app.run(argc, argv, "12_fast", [&] {
+        const std::string& output = image_options.output;
+        const int width = image_options.width, height = image_options.height;
         // Both images are written together at the end, or neither: a peer that
         // fails (or a signal while it is timed) replaces nothing.
         rl::ImageOutputs outputs;
@@ -80,8 +78,8 @@ int main(int argc, char** argv) {
         std::printf(
             "%d frames of %dx%d on %d threads (%s): median %.2f ms per frame (first excluded); "
             "%zu triangles, %.1f M triangles/s, %.1f M pixels shaded/s; into %s\n",
-            frames, width, height, renderer.threads(), fast::simd_target(), ms, counts.triangles,
-            static_cast<double>(counts.triangles) / ms / 1e3,
+            frames, width, height, renderer.threads(), fast::simd_target(), ms,
+            counts.pipeline.drawn, static_cast<double>(counts.pipeline.drawn) / ms / 1e3,
             static_cast<double>(counts.tiles.shaded) / ms / 1e3, output.c_str());
         std::printf(
             "median per frame: vertex %.2f ms, setup %.2f, binning %.2f, tiles %.2f; %.0f%% of "

@@ -113,7 +113,7 @@ struct Renderer::Impl {
     const shadows::ShadowMap* shadow_map = nullptr;  // set_shadow_map()'s, for every material
     shadows::ShadowLookup shadow_lookup;
     std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
-    std::vector<char> drawn;                                           // per model, this frame
+    std::vector<char> drawn;                                        // per model, this frame
     std::vector<perspective::MeshView> views;  // per model: lesson 05's view, its corner order
     // The faces in pieces of at most kPieceFaces, each set up by one thread
     // into its own triangles; `triangles` reads them as one array, in order.
@@ -121,9 +121,8 @@ struct Renderer::Impl {
     struct Piece {
         std::size_t model, first_face, faces;
         std::vector<FastTriangle> triangles;
-        perspective::PipelineCounts counts;
-        std::size_t refused = 0;
-        double visited = 0;  // pixels in the triangles' boxes (the overdraw cap)
+        perspective::PipelineCounts counts;  // culled, clipped, outside, refused
+        double visited = 0;               // pixels in the triangles' boxes (the overdraw cap)
     };
     std::vector<Piece> pieces;
     TriangleChunks triangles;
@@ -203,6 +202,9 @@ struct Renderer::Impl {
     // The frame's four steps (Renderer::render times each).
     void run_vertex_stage(const perspective::Camera& camera, FrameCounts& counts);
     void set_up_triangles(FrameCounts& counts);
+    void set_up_piece(Piece& piece, const perspective::ClipPlanes& planes);
+    void keep_triangle(Piece& piece, const Setup& t);
+    void join_pieces(perspective::PipelineCounts& counts);
     void bin_triangles();
     void draw_tiles(rl::Image& frame);
     // render_depth()'s own first and last steps.
@@ -311,7 +313,7 @@ void Renderer::Impl::run_vertex_stage(const perspective::Camera& camera, FrameCo
         for (std::size_t c = 0; c < 3; ++c) s.materials[i].eye[c] = camera.eye[c];
         if (r.cull_objects &&
             perspective::outside_frustum(model.box, p.uniforms.model_view_projection)) {
-            ++counts.objects_culled;
+            ++counts.pipeline.objects_culled;
             continue;
         }
         s.drawn[i] = true;
@@ -339,7 +341,7 @@ void Renderer::Impl::for_each_vertex(const FastModel& m, FrameCounts& counts, Bo
     // With the vertex cache, each distinct vertex; without, every corner.
     const std::size_t count = options.vertex_cache ? m.representative.size() : m.indices.size();
     counts.vertices += count;
-    counts.faces += m.indices.size() / 3;
+    counts.pipeline.faces += m.indices.size() / 3;
     const auto chunk = [&](const tbb::blocked_range<std::size_t>& range) {
         for (std::size_t v = range.begin(); v != range.end(); ++v) body(v);
     };
@@ -370,7 +372,7 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
             else
                 c = c / 3 * 3 + static_cast<std::size_t>(view.mesh_corner(static_cast<int>(c % 3)));
             const perspective::MeshCorner corner{&model.mesh, static_cast<int>(c / 3),
-                                                 static_cast<int>(c % 3)};
+                                              static_cast<int>(c % 3)};
             out[v] = {perspective::clip_position(model_view_projection, corner.position()), {}};
         });
     }
@@ -379,98 +381,103 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
 // 2. Cull, clip and set up every face, in lesson 07's order: the pieces
 // in parallel, each into its own triangles.
 void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
-    Impl& s = *this;
-    const normal_mapping::RenderOptions& r = s.options.render;
-    const perspective::PipelineOptions& pipeline = r.pipeline;
     const perspective::ClipPlanes planes =
-        perspective::clip_planes(pipeline.clip, s.width, s.height);
-    const triangles::PixelRect frame{0, 0, s.width, s.height};
-    zbuffer::DepthState bias;
-    bias.constant_bias = s.options.constant_bias, bias.slope_bias = s.options.slope_bias;
-    const auto set_up = [&](Impl::Piece& piece) {
-        piece.triangles.clear();
-        piece.counts = {}, piece.refused = 0, piece.visited = 0;
-        const std::size_t i = piece.model;
-        if (!s.drawn[i]) return;
-        const auto keep = [&](const Setup& t) {
-            // A shadow map's pass counts its work as lesson 08's does (by
-            // lesson 05's boxes, before the fixed-point snap).
-            if (s.options.depth_only)
-                piece.visited += static_cast<double>(perspective::box_samples(t.screen(), frame));
-            FastTriangle& fast = piece.triangles.emplace_back();
-            if (!fast_triangle(t, static_cast<std::uint32_t>(i), s.width, s.height, fast)) {
-                piece.triangles.pop_back();
-                ++piece.refused;
-                return;
-            }
-            if (fast.empty()) {
-                piece.triangles.pop_back();
-                return;
-            }
-            if (s.options.depth_only) {
-                // [doc:depth-bias]
-                // Lesson 08's bias, once per triangle, and the nearest depth it
-                // can then give (for the hierarchical depth test).
-                fast.depth_bias = perspective::depth_bias(t, bias);
-                if (fast.depth_bias != 0)
-                    fast.z_nearest = std::clamp(fast.z_min + fast.depth_bias, 0.0f, 1.0f);
-                // [/doc:depth-bias]
-            } else {
-                piece.visited +=
-                    static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
-            }
-        };
-        const FastModel& m = s.models[i];
-        const perspective::MeshView& view = s.views[i];
-        const std::vector<perspective::ClipVertex<Varyings>>& vertices = s.clip[i];
-        for (std::size_t f = piece.first_face; f < piece.first_face + piece.faces; ++f) {
-            // The corners of step 1: with the vertex cache, three indices into
-            // the distinct vertices, swapped as the surface swaps them when
-            // mirrored; without it, already in the surface's order.
-            // (Read where they are: a face culled costs no copy of its corners.)
-            std::size_t corner[3] = {3 * f, 3 * f + 1, 3 * f + 2};
-            if (s.options.vertex_cache)
-                for (int k = 0; k < 3; ++k) corner[k] = m.indices[3 * f + view.mesh_corner(k)];
-            // Lesson 05's stages 2-4: cull, clip, divide and viewport, set up.
-            perspective::assemble_face(vertices[corner[0]], vertices[corner[1]],
-                                       vertices[corner[2]], static_cast<int>(f), planes, s.width,
-                                       s.height, pipeline, piece.counts, keep);
-        }
-    };
-    if (s.options.parallel)
-        s.workers.for_chunks(s.pieces.size(), 1, [&](const tbb::blocked_range<std::size_t>& range) {
-            for (std::size_t c = range.begin(); c != range.end(); ++c) set_up(s.pieces[c]);
+        perspective::clip_planes(options.render.pipeline.clip, width, height);
+    if (options.parallel)
+        workers.for_chunks(pieces.size(), 1, [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t c = range.begin(); c != range.end(); ++c)
+                set_up_piece(pieces[c], planes);
         });
     else
-        for (Impl::Piece& piece : s.pieces) set_up(piece);
-    // The pieces, in order, as one array; the counts and the overdraw cap over all of them.
+        for (Piece& piece : pieces) set_up_piece(piece, planes);
+    join_pieces(counts.pipeline);
+}
+
+// One piece's faces through lesson 05's stages 2-4 (cull, clip, divide and
+// viewport, set-up), each triangle that comes out kept as a fast triangle.
+void Renderer::Impl::set_up_piece(Piece& piece, const perspective::ClipPlanes& planes) {
+    piece.triangles.clear();
+    piece.counts = {}, piece.visited = 0;
+    const std::size_t i = piece.model;
+    if (!drawn[i]) return;
+    const FastModel& m = models[i];
+    const perspective::MeshView& view = views[i];
+    const std::vector<perspective::ClipVertex<Varyings>>& vertices = clip[i];
+    for (std::size_t f = piece.first_face; f < piece.first_face + piece.faces; ++f) {
+        // The corners of step 1: with the vertex cache, three indices into
+        // the distinct vertices, swapped as the surface swaps them when
+        // mirrored; without it, already in the surface's order.
+        // (Read where they are: a face culled costs no copy of its corners.)
+        std::size_t corner[3] = {3 * f, 3 * f + 1, 3 * f + 2};
+        if (options.vertex_cache)
+            for (int k = 0; k < 3; ++k) corner[k] = m.indices[3 * f + view.mesh_corner(k)];
+        perspective::assemble_face(vertices[corner[0]], vertices[corner[1]], vertices[corner[2]],
+                                static_cast<int>(f), planes, width, height, options.render.pipeline,
+                                piece.counts, [&](const Setup& t) { keep_triangle(piece, t); });
+    }
+}
+
+// A set-up triangle as the tiles take it (snapped, its box and edges), or
+// counted refused; one that covers no pixel centre is dropped.
+void Renderer::Impl::keep_triangle(Piece& piece, const Setup& t) {
+    // A shadow map's pass counts its work as lesson 08's does (by lesson
+    // 05's boxes, before the fixed-point snap).
+    if (options.depth_only)
+        piece.visited += static_cast<double>(
+            perspective::box_samples(t.screen(), triangles::PixelRect{0, 0, width, height}));
+    FastTriangle& fast = piece.triangles.emplace_back();
+    if (!fast_triangle(t, static_cast<std::uint32_t>(piece.model), width, height, fast)) {
+        piece.triangles.pop_back();
+        ++piece.counts.refused;
+        return;
+    }
+    if (fast.empty()) {
+        piece.triangles.pop_back();
+        return;
+    }
+    if (options.depth_only) {
+        zbuffer::DepthState bias;
+        bias.constant_bias = options.constant_bias, bias.slope_bias = options.slope_bias;
+        // [doc:depth-bias]
+        // Lesson 08's bias, once per triangle, and the nearest depth it
+        // can then give (for the hierarchical depth test).
+        fast.depth_bias = perspective::depth_bias(t, bias);
+        if (fast.depth_bias != 0)
+            fast.z_nearest = std::clamp(fast.z_min + fast.depth_bias, 0.0f, 1.0f);
+        // [/doc:depth-bias]
+    } else {
+        piece.visited += static_cast<double>(fast.x1 - fast.x0 + 1) * (fast.y1 - fast.y0 + 1);
+    }
+}
+
+// The pieces, in order, as one array of triangles; their counts added up and
+// the overdraw cap applied over all of them (a shadow map's pass: each model
+// on its own, as lesson 08's does).
+void Renderer::Impl::join_pieces(perspective::PipelineCounts& counts) {
+    const perspective::PipelineOptions& pipeline = options.render.pipeline;
     // (A picture's cap of 0 or less is no cap; a map's is lesson 08's, 0 included.)
-    const double most_visited = pipeline.max_overdraw > 0 || s.options.depth_only
-                                    ? pipeline.max_overdraw * s.width * s.height
+    const double most_visited = pipeline.max_overdraw > 0 || options.depth_only
+                                    ? pipeline.max_overdraw * width * height
                                     : HUGE_VAL;
     double visited = 0;
     std::size_t total = 0;
-    for (std::size_t c = 0; c < s.pieces.size(); ++c) {
-        const Impl::Piece& piece = s.pieces[c];
-        counts.culled += piece.counts.culled;
-        counts.clipped += piece.counts.clipped;
-        counts.outside += piece.counts.outside;
-        counts.refused += piece.refused;
-        // A shadow map's pass caps each model on its own, as lesson 08's does.
-        if (s.options.depth_only && c > 0 && piece.model != s.pieces[c - 1].model) {
+    for (std::size_t c = 0; c < pieces.size(); ++c) {
+        const Piece& piece = pieces[c];
+        counts += piece.counts;
+        if (options.depth_only && c > 0 && piece.model != pieces[c - 1].model) {
             if (visited > most_visited) perspective::throw_overdraw(most_visited);
             visited = 0;
         }
         visited += piece.visited;
-        s.triangles.data[c] = piece.triangles.data();
-        s.triangles.start[c] = static_cast<std::uint32_t>(total);
+        triangles.data[c] = piece.triangles.data();
+        triangles.start[c] = static_cast<std::uint32_t>(total);
         total += piece.triangles.size();
         if (total >= std::numeric_limits<std::uint32_t>::max())
             throw std::runtime_error("more than 2^32 - 2 triangles in one frame");
     }
-    s.triangles.start.back() = static_cast<std::uint32_t>(total);
+    triangles.start.back() = static_cast<std::uint32_t>(total);
     if (visited > most_visited) perspective::throw_overdraw(most_visited);
-    counts.triangles = total;
+    counts.drawn = total;
 }
 
 // 3. Binning: each triangle into the tiles its box touches, in drawing

@@ -66,14 +66,14 @@ struct StageTimes {
     double vertex = 0, setup = 0, binning = 0, tiles = 0;
 };
 
+// What a frame did: lesson 05's counts of the faces (objects_culled, faces,
+// culled, clipped, outside, refused; `drawn`: the triangles set up and
+// binned; its sample counts stay 0, the tiles' own being in `tiles`), the
+// vertex stage's runs, and the tiles' counts.
 struct FrameCounts {
+    perspective::PipelineCounts pipeline;
     std::size_t vertices = 0;  // vertex-stage runs (distinct vertices of the models drawn)
-    std::size_t faces = 0;     // faces of the models drawn
-    std::size_t culled = 0;    // by their winding (lesson 05's PipelineCounts)
-    std::size_t clipped = 0, outside = 0, refused = 0;
-    std::size_t triangles = 0;  // set up and binned
-    std::size_t objects_culled = 0;
-    TileCounts tiles;  // summed over the tiles
+    TileCounts tiles;          // summed over the tiles
 };
 
 // A model as the fast path draws it: distinct vertices (each one corner that

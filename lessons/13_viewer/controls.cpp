@@ -195,8 +195,8 @@ Orbit orbit_of(const perspective::Camera& camera) {
 }
 
 perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
-                              const perspective::ViewOptions& view, const perspective::Box& box,
-                              float aspect) {
+                           const perspective::ViewOptions& view, const perspective::Box& box,
+                           float aspect) {
     constexpr float radians = std::numbers::pi_v<float> / 180;
     const float yaw = orbit.yaw * radians, pitch = orbit.pitch * radians;
     const Frame f = frame_of(start);

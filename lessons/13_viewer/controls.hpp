@@ -24,12 +24,8 @@ namespace viewer {
 // Which renderer draws the frame: lesson 12's fast path, lesson 07's clear
 // one, or the fast path with lesson 08's shadows (the shadows key).
 enum class Path { fast, lesson07, shadows };
-inline constexpr std::array<rl::Named<Path>, 3> kPathNames = {
-    {{Path::fast, "fast"}, {Path::lesson07, "lesson07"}, {Path::shadows, "shadows"}}};
-inline constexpr std::array<Path, 3> kPaths = rl::values_of(kPathNames);
-inline const char* name(Path value) {
-    return rl::name_in(kPathNames, value);
-}
+RASTERLAB_NAMED_ENUM(Path, kPaths, {Path::fast, "fast"}, {Path::lesson07, "lesson07"},
+                     {Path::shadows, "shadows"});
 
 struct Settings {
     Path path = Path::fast;
@@ -112,8 +108,8 @@ Orbit orbit_of(const perspective::Camera& camera);
 // field of view): the eye on the orbit, near and far as `view` gives them
 // (--near, --far) or fitted to `box`, as the programs frame them.
 perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
-                              const perspective::ViewOptions& view, const perspective::Box& box,
-                              float aspect);
+                           const perspective::ViewOptions& view, const perspective::Box& box,
+                           float aspect);
 
 // One line of the current settings, for the title bar and the tests.
 std::string describe(const Settings& settings);

@@ -73,10 +73,8 @@ int main(int argc, char** argv) {
     app.add_flag("--vsync", vsync,
                  "Wait for the display's refresh (the frame time is then not "
                  "the renderer's)");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    const int width = window.width, height = window.height;
-
-    return rl::guarded_main("13_viewer", [&] {
+    return app.run(argc, argv, "13_viewer", [&] {
+        const int width = window.width, height = window.height;
         if (screenshot_option->count() > 0) {  // -o '' is refused, not ignored
             rl::check_image_output(screenshot);
             frames = std::max(frames, 1);  // a screenshot alone: one frame, then stop

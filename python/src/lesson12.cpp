@@ -48,7 +48,7 @@ void bind_lesson12(py::module_ m) {
             r.count("median_ms", run.median_ms);
             r.count("threads", renderer.threads());
             r.count("simd", std::string(fast::simd_target()));
-            r.count("triangles", run.counts.triangles);
+            r.count("triangles", run.counts.pipeline.drawn);
             r.count("pixels_shaded", static_cast<std::size_t>(run.counts.tiles.shaded));
             const fast::StageTimes& t = run.median_stages;
             r.count("vertex_ms", t.vertex);

@@ -46,7 +46,7 @@ std::vector<std::string> model_paths(py::handle models) {
 }
 
 perspective::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
-                                      const std::vector<double>& light) {
+                                   const std::vector<double>& light) {
     perspective::ViewOptions view;
     view.models = model_paths(models);
     view.light = three("--light", light);

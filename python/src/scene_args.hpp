@@ -53,7 +53,7 @@ std::vector<std::string> model_paths(py::handle models);
 // The view lesson 05's options would give: models, camera (None: framed) and
 // --light (three numbers).
 perspective::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
-                                      const std::vector<double>& light);
+                                   const std::vector<double>& light);
 
 // The programs' --light default (ViewOptions'), as a keyword's default.
 std::vector<double> default_light();

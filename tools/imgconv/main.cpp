@@ -24,8 +24,7 @@ int main(int argc, char** argv) {
                  "shows when a bottom-row-first frame is sent as it is");
     app.add_option("--crop", crop, "Keep only the rectangle X Y W H (X, Y: its bottom-left pixel)")
         ->expected(4);
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("imgconv", [&] {
+    return app.run(argc, argv, "imgconv", [&] {
         rl::Image image = rl::load_image(input);
         if (!crop.empty()) {
             const int x0 = crop[0], y0 = crop[1], w = crop[2], h = crop[3];

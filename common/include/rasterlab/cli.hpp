@@ -12,7 +12,10 @@
 //   rl::add_method_option(app, "--raster", method, triangles::kRasterMethods, "Rasterizer");
 //   rl::add_light_option(app, light);  // then rl::check_direction("--light", light)
 //   app.add_option("--near", near)->check(rl::positive_number());
-//   if (const auto exit = app.parse(argc, argv)) return *exit;  // --help, or a refused option
+//   return app.run(argc, argv, "02_triangles", [&] {  // --help or a refused option: not run
+//       rl::check_image_output(image_options.output);  // a throw: "02_triangles: error: ..."
+//       return 0;
+//   });
 #pragma once
 
 #include <array>
@@ -119,6 +122,11 @@ class CommandLine {
     // Parses the arguments; on --help or a refused option, prints what CLI11
     // prints and returns the exit code for main to return.
     std::optional<int> parse(int argc, char** argv);
+
+    // A program's main in one call: parses the arguments (--help and a
+    // refused option end here, as parse() says), then runs `body` under
+    // rl::guarded_main (main_guard.hpp) and returns its exit code.
+    int run(int argc, char** argv, const char* program, const std::function<int()>& body);
 
   private:
     explicit CommandLine(CLI::App* subcommand);

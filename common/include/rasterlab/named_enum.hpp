@@ -1,15 +1,14 @@
 // Competing methods sit behind one enum per lesson. Each enum lists its
-// values with their names once, in a table of Named<E>:
+// values with their names once, under the enum:
 //
 //   enum class Filter { nearest, bilinear };
-//   inline constexpr std::array<rl::Named<Filter>, 2> kFilterNames = {
-//       {{Filter::nearest, "nearest"}, {Filter::bilinear, "bilinear"}}};
-//   inline constexpr std::array<Filter, 2> kFilters = rl::values_of(kFilterNames);
-//   inline const char* name(Filter f) { return rl::name_in(kFilterNames, f); }
+//   RASTERLAB_NAMED_ENUM(Filter, kFilters, {Filter::nearest, "nearest"},
+//                        {Filter::bilinear, "bilinear"});
 //
-// and `name(E)` is found by argument-dependent lookup. The helpers below
-// turn names into values and back, for the command lines, the labs and the
-// tests alike.
+// which declares, in the enum's namespace, `kFilters` (every value, in the
+// table's order), `name(Filter)` (found by argument-dependent lookup) and
+// `name_table(Filter)` (the pairs). The helpers below turn names into values
+// and back, for the command lines, the labs and the tests alike.
 #pragma once
 
 #include <array>
@@ -58,3 +57,16 @@ std::string names_of(const std::array<E, N>& all) {
 }
 
 }  // namespace rl
+
+// The table of an enum's values and names, its name() and the array of its
+// values, from one list of {value, "name"} pairs (see the top of this file).
+// A macro because the three must be declared in the enum's own namespace for
+// name() to be found beside the enum.
+#define RASTERLAB_NAMED_ENUM(Enum, all_values, ...)           \
+    constexpr auto name_table(Enum) {                         \
+        return std::to_array<rl::Named<Enum>>({__VA_ARGS__}); \
+    }                                                         \
+    constexpr const char* name(Enum value) {                  \
+        return rl::name_in(name_table(value), value);         \
+    }                                                         \
+    inline constexpr auto all_values = rl::values_of(name_table(Enum{}))

@@ -6,10 +6,10 @@
 
 #include <cstdio>
 
+#include "02_triangles/truths/triangle_measure.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "triangle_measure.hpp"
 
 namespace {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "ray_truth.hpp"
+#include "05_perspective/truths/ray_truth.hpp"
 
 namespace perspective {
 

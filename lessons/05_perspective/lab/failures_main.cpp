@@ -27,11 +27,8 @@ rl::Rgba id_colour(int id) {
 }
 
 enum class SceneName { around_eye, floor };
-constexpr std::array<rl::Named<SceneName>, 2> kSceneNames = {
-    {{SceneName::around_eye, "around-eye"}, {SceneName::floor, "floor"}}};
-const char* name(SceneName value) {
-    return rl::name_in(kSceneNames, value);
-}
+RASTERLAB_NAMED_ENUM(SceneName, kScenes, {SceneName::around_eye, "around-eye"},
+                     {SceneName::floor, "floor"});
 
 }  // namespace
 
@@ -45,23 +42,19 @@ int main(int argc, char** argv) {
     perspective::PipelineOptions options;
     bool truth = false;
     rl::add_image_options(app, image_options);
-    rl::add_method_option(app, "--scene", scene, rl::values_of(kSceneNames),
-                          "The lab's clipping scene");
+    rl::add_method_option(app, "--scene", scene, kScenes, "The lab's clipping scene");
     rl::add_method_option(app, "--clip", options.clip, perspective::kClipModes, "Clipping");
     app.add_flag("--truth", truth, "The lab's ray-cast truth instead of the pipeline");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("05_failures", [&] {
+    return app.run(argc, argv, "05_failures", [&] {
         rl::check_image_output(image_options.output);
         const perspective::ClippingScene s = scene == SceneName::around_eye
-                                                 ? perspective::around_eye_scene(200)
-                                                 : perspective::floor_scene();
+                                              ? perspective::around_eye_scene(200)
+                                              : perspective::floor_scene();
         const int width = image_options.width, height = image_options.height;
         perspective::PipelineCounts counts;
         const rl::Grid<int> ids =
-            truth
-                ? perspective::exact_ids(s.triangles,
-                                         perspective::RayCamera(s.camera, width, height))
-                : perspective::pipeline_ids(s.triangles, s.camera, width, height, options, &counts);
+            truth ? perspective::exact_ids(s.triangles, perspective::RayCamera(s.camera, width, height))
+                  : perspective::pipeline_ids(s.triangles, s.camera, width, height, options, &counts);
         rl::Image picture(width, height);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) picture.set(x, y, id_colour(ids.get(x, y)));

@@ -10,9 +10,9 @@
 
 #include "05_perspective/view_cli.hpp"
 #include "06_shading/shaders.hpp"
+#include "06_shading/truths/sphere_truth.hpp"
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
-#include "sphere_truth.hpp"
 
 namespace {
 
@@ -42,11 +42,8 @@ struct UnclampedPowShader {
 };
 
 enum class Mistake { none, unclamped_pow };
-constexpr std::array<rl::Named<Mistake>, 2> kMistakeNames = {
-    {{Mistake::none, "none"}, {Mistake::unclamped_pow, "unclamped-pow"}}};
-const char* name(Mistake value) {
-    return rl::name_in(kMistakeNames, value);
-}
+RASTERLAB_NAMED_ENUM(Mistake, kMistakes, {Mistake::none, "none"},
+                     {Mistake::unclamped_pow, "unclamped-pow"});
 
 }  // namespace
 
@@ -63,7 +60,7 @@ int main(int argc, char** argv) {
     std::vector<float> light{0.3f, 0.5f, 1.0f};
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--shading", model, kShadingModels, "Shading model");
-    rl::add_method_option(app, "--mistake", mistake, rl::values_of(kMistakeNames),
+    rl::add_method_option(app, "--mistake", mistake, kMistakes,
                           "The mistake to make (unclamped-pow: Phong's highlight only)");
     app.add_option("--shininess", shininess, "Specular exponent")
         ->capture_default_str()
@@ -72,8 +69,7 @@ int main(int argc, char** argv) {
         ->capture_default_str()
         ->check(rl::range(3, 1024));
     rl::add_light_option(app, light);
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("06_failures", [&] {
+    return app.run(argc, argv, "06_failures", [&] {
         rl::check_image_output(image_options.output);
         rl::check_direction("--light", light);
         const int width = image_options.width, height = image_options.height;

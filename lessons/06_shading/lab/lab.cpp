@@ -9,10 +9,10 @@
 #include <cstdio>
 
 #include "06_shading/shaders.hpp"
+#include "06_shading/truths/sphere_truth.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "sphere_truth.hpp"
 
 namespace {
 

@@ -24,23 +24,14 @@ namespace {
 using namespace normal_mapping;
 
 enum class SceneName { globe, crate, mirrored_plane, low_poly_globe };
-constexpr std::array<rl::Named<SceneName>, 4> kSceneNames = {
-    {{SceneName::globe, "globe"},
-     {SceneName::crate, "crate"},
-     {SceneName::mirrored_plane, "mirrored-plane"},
-     {SceneName::low_poly_globe, "low-poly-globe"}}};
-const char* name(SceneName value) {
-    return rl::name_in(kSceneNames, value);
-}
+RASTERLAB_NAMED_ENUM(SceneName, kScenes, {SceneName::globe, "globe"}, {SceneName::crate, "crate"},
+                     {SceneName::mirrored_plane, "mirrored-plane"},
+                     {SceneName::low_poly_globe, "low-poly-globe"});
 
 enum class Mistake { none, green_flipped, handedness_ignored };
-constexpr std::array<rl::Named<Mistake>, 3> kMistakeNames = {
-    {{Mistake::none, "none"},
-     {Mistake::green_flipped, "green-flipped"},
-     {Mistake::handedness_ignored, "handedness-ignored"}}};
-const char* name(Mistake value) {
-    return rl::name_in(kMistakeNames, value);
-}
+RASTERLAB_NAMED_ENUM(Mistake, kMistakes, {Mistake::none, "none"},
+                     {Mistake::green_flipped, "green-flipped"},
+                     {Mistake::handedness_ignored, "handedness-ignored"});
 
 // The map with each texel's green byte inverted: what a renderer expecting
 // +v up makes of a map baked with +v down, or the reverse.
@@ -69,9 +60,8 @@ int main(int argc, char** argv) {
     int segments = 12;
     std::vector<float> eye, light{0.3f, 0.5f, 1.0f};
     rl::add_image_options(app, image_options);
-    rl::add_method_option(app, "--scene", scene, rl::values_of(kSceneNames), "Model to draw");
-    rl::add_method_option(app, "--mistake", mistake, rl::values_of(kMistakeNames),
-                          "The mistake to make");
+    rl::add_method_option(app, "--scene", scene, kScenes, "Model to draw");
+    rl::add_method_option(app, "--mistake", mistake, kMistakes, "The mistake to make");
     rl::add_method_option(app, "--tangents", tangents, kTangentMethods, "Tangent frames");
     app.add_option("--segments", segments, "Segments around the low-poly globe")
         ->capture_default_str()
@@ -80,8 +70,7 @@ int main(int argc, char** argv) {
         ->expected(3)
         ->check(rl::finite_number());
     rl::add_light_option(app, light);
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("07_failures", [&] {
+    return app.run(argc, argv, "07_failures", [&] {
         rl::check_image_output(image_options.output);
         std::vector<std::string> warnings;
         perspective::ViewOptions view;

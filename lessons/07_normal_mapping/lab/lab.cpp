@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "05_perspective/lab/ray_truth.hpp"
+#include "05_perspective/truths/ray_truth.hpp"
 #include "07_normal_mapping/scene.hpp"
 #include "globe_relief.hpp"
 #include "rasterlab/lab.hpp"
@@ -140,8 +140,7 @@ void frame_depth_only(benchmark::State& state, const LessonFrame* f) {
     for (auto _ : state) {
         perspective::RenderTarget<> depth(f->size, f->size);
         benchmark::DoNotOptimize(
-            perspective::draw(shading::Surface(m.lit.model.mesh, m.lit.normals), unlit, depth)
-                .shaded);
+            perspective::draw(shading::Surface(m.lit.model.mesh, m.lit.normals), unlit, depth).shaded);
     }
 }
 
@@ -167,8 +166,7 @@ void build_tangents(benchmark::State& state, const shading::LitModel* lit, Tange
 
 void render_globe(benchmark::State& state, const Timed* t) {
     for (auto _ : state) {
-        perspective::ColourTarget frame =
-            perspective::colour_target(t->globe->size, t->globe->size);
+        perspective::ColourTarget frame = perspective::colour_target(t->globe->size, t->globe->size);
         const NormalMappedShader shader{
             t->globe->uniforms, *t->maps, t->source, shading::Specular::blinn_phong, 1.0f,
             t->tangents};

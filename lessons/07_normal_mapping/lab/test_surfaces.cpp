@@ -1,6 +1,6 @@
 #include "test_surfaces.hpp"
 
-#include "06_shading/lab/sphere_truth.hpp"
+#include "06_shading/truths/sphere_truth.hpp"
 
 namespace normal_mapping {
 namespace {

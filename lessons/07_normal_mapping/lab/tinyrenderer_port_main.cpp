@@ -19,8 +19,7 @@ int main(int argc, char** argv) {
     perspective::ViewOptions view;
     perspective::add_view_options(app, view, "the globe from obj/");
     rl::add_image_options(app, image_options);
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("07_tinyrenderer_port", [&] {
+    return app.run(argc, argv, "07_tinyrenderer_port", [&] {
         rl::check_image_output(image_options.output);
         if (view.models.size() > 1) throw std::invalid_argument("--model: one model only");
         std::vector<std::string> warnings;
@@ -40,7 +39,7 @@ int main(int argc, char** argv) {
         const int width = image_options.width, height = image_options.height;
         const perspective::Camera camera =
             perspective::resolve_camera(view, perspective::bounds(mesh, rl::mat4::identity()),
-                                        static_cast<float>(width) / static_cast<float>(height));
+                                     static_cast<float>(width) / static_cast<float>(height));
         const auto start = std::chrono::steady_clock::now();
         const tinyrenderer_port::Result result = tinyrenderer_port::render(
             mesh, {&diffuse, &normals}, camera, perspective::light_direction(view), width, height);

@@ -21,10 +21,10 @@
 #include <utility>
 
 #include "05_perspective/view_options.hpp"
+#include "08_shadows/truths/visibility_truth.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
-#include "visibility_truth.hpp"
 
 namespace {
 

@@ -32,13 +32,13 @@
 #include "09_environment/glossy_map.hpp"
 #include "09_environment/irradiance.hpp"
 #include "09_environment/sphere_sampling.hpp"
-#include "glossy_truth.hpp"
-#include "irradiance_truth.hpp"
+#include "09_environment/truths/glossy_truth.hpp"
+#include "09_environment/truths/irradiance_truth.hpp"
+#include "09_environment/truths/sky_truth.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"
 #include "rasterlab/workers.hpp"
-#include "sky_truth.hpp"
 
 namespace {
 
@@ -98,8 +98,7 @@ rl::Image sky_picture(const Environment& env, const perspective::Camera& camera,
     return tone_mapped(frame.colour(), {});
 }
 
-void sky_pass(benchmark::State& state, const Environment* env, perspective::Camera camera,
-              int size) {
+void sky_pass(benchmark::State& state, const Environment* env, perspective::Camera camera, int size) {
     LightTarget frame = light_target(size, size);
     for (auto _ : state) {
         draw_skybox(*env, camera, frame);

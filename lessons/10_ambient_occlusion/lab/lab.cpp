@@ -22,7 +22,7 @@
 #include <string>
 
 #include "05_perspective/view_options.hpp"
-#include "ao_truth.hpp"
+#include "10_ambient_occlusion/truths/ao_truth.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"

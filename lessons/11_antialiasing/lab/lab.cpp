@@ -15,7 +15,7 @@
 #include <string>
 
 #include "05_perspective/view_options.hpp"
-#include "aa_truth.hpp"
+#include "11_antialiasing/truths/aa_truth.hpp"
 #include "rasterlab/lab.hpp"
 #include "rasterlab/main_guard.hpp"
 #include "rasterlab/results_table.hpp"

@@ -74,8 +74,7 @@ int main(int argc, char** argv) {
     app.add_option("-o,--output", texture_name,
                    "The sign's texture (.tga or .png); sign.obj and sign.mtl go in its folder")
         ->capture_default_str();
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("11_text_sign", [&] {
+    return app.run(argc, argv, "11_text_sign", [&] {
         const std::filesystem::path texture = texture_name;
         rl::check_image_output(texture);
         const std::filesystem::path folder = texture.parent_path();

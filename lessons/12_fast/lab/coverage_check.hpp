@@ -30,17 +30,11 @@ namespace fast {
 //   pair clears and fills the buffer before the first one is copied out, so
 //   the first tile shows the second's pixels (one interleaving of many).
 enum class CoverageMistake { none, inclusive_ties, exclusive_ties, tile_origin, shared_buffer };
-inline constexpr std::array<rl::Named<CoverageMistake>, 5> kCoverageMistakeNames = {
-    {{CoverageMistake::none, "none"},
-     {CoverageMistake::inclusive_ties, "inclusive-ties"},
-     {CoverageMistake::exclusive_ties, "exclusive-ties"},
-     {CoverageMistake::tile_origin, "tile-origin"},
-     {CoverageMistake::shared_buffer, "shared-buffer"}}};
-inline constexpr std::array<CoverageMistake, 5> kCoverageMistakes =
-    rl::values_of(kCoverageMistakeNames);
-inline const char* name(CoverageMistake value) {
-    return rl::name_in(kCoverageMistakeNames, value);
-}
+RASTERLAB_NAMED_ENUM(CoverageMistake, kCoverageMistakes, {CoverageMistake::none, "none"},
+                     {CoverageMistake::inclusive_ties, "inclusive-ties"},
+                     {CoverageMistake::exclusive_ties, "exclusive-ties"},
+                     {CoverageMistake::tile_origin, "tile-origin"},
+                     {CoverageMistake::shared_buffer, "shared-buffer"});
 
 // Empty optional when the fast path refuses the triangle (as lesson 02 does
 // beyond 2^22 pixels or with NaN); otherwise the pixels, row by row.

@@ -36,8 +36,7 @@ int main(int argc, char** argv) {
         ->check(rl::range(8, 1024));
     rl::add_method_option(app, "--mistake", mistake, fast::kCoverageMistakes,
                           "The mistake to make");
-    if (const auto exit = app.parse(argc, argv)) return *exit;
-    return rl::guarded_main("12_failures", [&] {
+    return app.run(argc, argv, "12_failures", [&] {
         rl::check_image_output(output);
         if (tile_size % fast::kBlock != 0)
             throw std::invalid_argument("--tile-size: " + std::to_string(tile_size) +

@@ -37,7 +37,7 @@
 #include <tuple>
 
 #include "05_perspective/view_options.hpp"
-#include "06_shading/lab/sphere_truth.hpp"
+#include "06_shading/truths/sphere_truth.hpp"
 #include "12_fast/orbit.hpp"
 #include "12_fast/renderer.hpp"
 #include "hwy/targets.h"

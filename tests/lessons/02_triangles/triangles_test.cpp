@@ -6,7 +6,7 @@
 #include <limits>
 #include <set>
 
-#include "02_triangles/lab/triangle_measure.hpp"
+#include "02_triangles/truths/triangle_measure.hpp"
 
 namespace {
 

@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "05_perspective/lab/ray_truth.hpp"
 #include "05_perspective/scene.hpp"
+#include "05_perspective/truths/ray_truth.hpp"
 #include "rasterlab/image_metrics.hpp"
 
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "05_perspective/lab/tile_check.hpp"
 #include "05_perspective/scene.hpp"
+#include "05_perspective/truths/tile_check.hpp"
 #include "05_perspective/view_options.hpp"
 #include "rasterlab/checkpoint.hpp"
 #include "rasterlab/image_metrics.hpp"

@@ -9,10 +9,10 @@
 #include <cmath>
 
 #include "03_zbuffer/hidden_surfaces.hpp"
-#include "05_perspective/lab/tile_check.hpp"
+#include "05_perspective/truths/tile_check.hpp"
 #include "05_perspective/view_options.hpp"
-#include "06_shading/lab/sphere_truth.hpp"
 #include "06_shading/scene.hpp"
+#include "06_shading/truths/sphere_truth.hpp"
 #include "rasterlab/texture_files.hpp"
 #include "rasterlab/transform.hpp"
 
@@ -325,12 +325,11 @@ TEST(ShadingTest, DefaultSceneTileByTileEqualsOneDraw) {
     perspective::Box box;
     for (const LitModel& m : models) box.add(perspective::bounds(m.model.mesh, m.model.transform));
     const perspective::Camera camera = perspective::resolve_camera({}, box, 1.5f);
-    EXPECT_TRUE(
-        perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
-            ShadingOptions options;
-            options.pipeline.tile = tile;
-            render(models, camera, options, frame);
-        }));
+    EXPECT_TRUE(perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
+        ShadingOptions options;
+        options.pipeline.tile = tile;
+        render(models, camera, options, frame);
+    }));
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "05_perspective/lab/tile_check.hpp"
+#include "05_perspective/truths/tile_check.hpp"
 #include "05_perspective/view_options.hpp"
 #include "07_normal_mapping/scene.hpp"
 
@@ -317,12 +317,11 @@ TEST(NormalMappingTest, DefaultSceneTileByTileEqualsOneDraw) {
     for (const MappedModel& m : models)
         box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
     const perspective::Camera camera = perspective::resolve_camera({}, box, 1.5f);
-    EXPECT_TRUE(
-        perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
-            RenderOptions options;
-            options.pipeline.tile = tile;
-            render(models, camera, options, frame);
-        }));
+    EXPECT_TRUE(perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
+        RenderOptions options;
+        options.pipeline.tile = tile;
+        render(models, camera, options, frame);
+    }));
 }
 
 }  // namespace

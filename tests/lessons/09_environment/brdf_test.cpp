@@ -125,8 +125,8 @@ TEST(Brdf, TheWhiteFurnaceHoldsForEveryRoughness) {
 // the white world is 1 (both methods), and darker without the lost bounces.
 TEST(Brdf, TheWhiteFurnaceRenderVanishes) {
     std::vector<std::string> warnings;
-    const auto scene = load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split,
-                                  64, 48, warnings);
+    const auto scene =
+        load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split, 64, 48, warnings);
     const Environment white = constant({1, 1, 1});
     for (float roughness : {0.0f, 0.3f, 0.7f, 1.0f})
         for (Glossy method : kGlossies)
@@ -271,8 +271,8 @@ TEST(GlossyMap, ASunTenToTheFiveTimesTheSkyStaysFinite) {
         EXPECT_GT(towards.x, away.x) << roughness;
     }
     std::vector<std::string> warnings;
-    const auto scene = load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split,
-                                  48, 36, warnings);
+    const auto scene =
+        load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split, 48, 36, warnings);
     for (Glossy method : kGlossies) {
         RenderOptions options;
         options.material = Material::plastic;
@@ -300,8 +300,8 @@ namespace {
 TEST(GlossyShader, ReadingAlongTheLeanIsCloserToTheReference) {
     using namespace environment;
     std::vector<std::string> warnings;
-    const auto scene = load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split,
-                                  64, 48, warnings);
+    const auto scene =
+        load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split, 64, 48, warnings);
     // No sun: Monte Carlo's reference converges (a 2-degree sun 400 times
     // the sky leaves any few thousand rays speckled).
     Sky sunless = default_sky();

@@ -8,7 +8,7 @@
 #include <numbers>
 
 #include "09_environment/irradiance.hpp"
-#include "09_environment/lab/irradiance_truth.hpp"
+#include "09_environment/truths/irradiance_truth.hpp"
 
 namespace {
 

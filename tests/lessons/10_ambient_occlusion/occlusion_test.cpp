@@ -8,8 +8,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "10_ambient_occlusion/lab/ao_truth.hpp"
 #include "10_ambient_occlusion/lab/tinyrenderer_ssao.hpp"
+#include "10_ambient_occlusion/truths/ao_truth.hpp"
 #include "rasterlab/transform.hpp"
 
 namespace {

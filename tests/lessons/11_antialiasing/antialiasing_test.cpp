@@ -123,9 +123,9 @@ TEST(Coverage, SharedEdgesStoreEachSampleOnce) {
                 float lowest = 1;
                 Target ssaa = target_of(29, n), msaa = target_of(29, n);
                 const auto a = perspective::draw(geometry, Counted{&runs, &lowest}, ssaa, {},
-                                                 Supersampling{offsets});
+                                              Supersampling{offsets});
                 const auto b = perspective::draw(geometry, Counted{&runs, &lowest}, msaa, {},
-                                                 Multisampling{offsets});
+                                              Multisampling{offsets});
                 const std::size_t all = 29u * 29u * static_cast<std::size_t>(n);
                 EXPECT_EQ(a.stored, all) << name(p) << " " << n;
                 EXPECT_EQ(b.stored, all) << name(p) << " " << n;
@@ -292,8 +292,8 @@ TEST(Coverage, AllSamplesCoveredResolveToTheOneSampleImage) {
     for (int n : {2, 4, 8, 16}) {
         const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, n);
         Target many = target_of(23, n);
-        const auto counts = perspective::draw(covering, Gradient{}, many, {},
-                                              Multisampling{offsets, ShadeAt::centre});
+        const auto counts =
+            perspective::draw(covering, Gradient{}, many, {}, Multisampling{offsets, ShadeAt::centre});
         EXPECT_EQ(counts.stored, 23u * 23u * static_cast<std::size_t>(n));
         const rl::Grid<rl::vec3> resolved = resolve(many.colour(), offsets, Resolve::box);
         for (int y = 0; y < 23; ++y)
@@ -336,9 +336,9 @@ TEST(Coverage, CentroidShadingStaysInsideTheTriangle) {
     int runs = 0;
     Target a = target_of(31, 8), b = target_of(31, 8);
     perspective::draw(thin, Counted{&runs, &centre_lowest}, a, {},
-                      Multisampling{offsets, ShadeAt::centre});
+                   Multisampling{offsets, ShadeAt::centre});
     perspective::draw(thin, Counted{&runs, &centroid_lowest}, b, {},
-                      Multisampling{offsets, ShadeAt::centroid});
+                   Multisampling{offsets, ShadeAt::centroid});
     EXPECT_LT(centre_lowest, -0.01f);
     EXPECT_GE(centroid_lowest, -1e-6f);
 }

@@ -16,8 +16,8 @@
 #include <random>
 #include <set>
 
-#include "02_triangles/lab/triangle_measure.hpp"
 #include "02_triangles/overdraw.hpp"
+#include "02_triangles/truths/triangle_measure.hpp"
 #include "06_shading/colour.hpp"
 #include "07_normal_mapping/scene.hpp"
 #include "12_fast/lab/coverage_check.hpp"

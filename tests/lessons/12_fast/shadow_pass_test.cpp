@@ -197,8 +197,7 @@ struct SecondPass {
     rl::Image lesson08;
     std::vector<rl::Image> fast;
 };
-SecondPass second_pass(const perspective::ViewedScene<MappedModel>& s,
-                       const shadows::ShadowOptions& o,
+SecondPass second_pass(const perspective::ViewedScene<MappedModel>& s, const shadows::ShadowOptions& o,
                        std::initializer_list<fast::Renderer*> renderers) {
     const rl::Image& size = (*renderers.begin())->frame();
     const float aspect = static_cast<float>(size.width()) / static_cast<float>(size.height());

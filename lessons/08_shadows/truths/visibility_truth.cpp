@@ -131,7 +131,7 @@ ProbeFrame probe(const std::vector<normal_mapping::MappedModel>& models,
                       const ShadowedShader& shader) {
                       const auto index = static_cast<std::size_t>(&m - models.data());
                       return perspective::draw(surface, ProbeShader{shader, first[index]}, target,
-                                               options.render.pipeline);
+                                            options.render.pipeline);
                   });
     return {std::move(target.colour<0>()), std::move(target.colour<1>())};
 }

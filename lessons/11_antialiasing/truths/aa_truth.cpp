@@ -10,9 +10,8 @@ namespace antialiasing {
 
 // [doc:truth]
 rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& models,
-                               const perspective::Camera& camera,
-                               const shadows::ShadowOptions& shadow, int width, int height,
-                               int side, const AaOptions& tone) {
+                               const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                               int width, int height, int side, const AaOptions& tone) {
     if (side < 4 || side % 4 != 0)
         throw std::invalid_argument("the truth's grid side must be a multiple of 4");
     // The fine grid's offsets, cut into 4 x 4 blocks: one frame each.

@@ -37,8 +37,8 @@ class SceneRays {
     explicit SceneRays(const std::vector<normal_mapping::MappedModel>& models);
     // `light`: the map's light view (its kind, position and axis); a spot's
     // cone as the renderer's cone_factor() sees it.
-    TruthFrame truth(const perspective::Camera& camera, int width, int height,
-                     const LightView& light, float cone_degrees = 180) const;
+    TruthFrame truth(const perspective::Camera& camera, int width, int height, const LightView& light,
+                     float cone_degrees = 180) const;
     // The same points lit by a round light of the given angular radius
     // (directional lights only): per pixel, the share of 16 rays towards
     // points of its disc that pass, NaN where truth() is NaN. The sun is

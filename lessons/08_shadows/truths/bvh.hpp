@@ -12,7 +12,7 @@
 #include <limits>
 #include <vector>
 
-#include "05_perspective/lab/ray_truth.hpp"
+#include "05_perspective/truths/ray_truth.hpp"
 
 namespace shadows {
 
@@ -41,7 +41,7 @@ class Bvh {
     template <bool kAny>
     RayHit trace(rl::dvec3 origin, rl::dvec3 d, double t_min, double t_max) const;
     std::vector<perspective::WorldTriangle> triangles_;  // as given
-    std::vector<int> order_;                             // triangle indices, grouped by leaf
+    std::vector<int> order_;                          // triangle indices, grouped by leaf
     std::vector<Node> nodes_;
 };
 

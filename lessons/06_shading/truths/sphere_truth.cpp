@@ -1,6 +1,6 @@
 #include "sphere_truth.hpp"
 
-#include "05_perspective/lab/ray_truth.hpp"
+#include "05_perspective/truths/ray_truth.hpp"
 
 #include <cmath>
 #include <numbers>

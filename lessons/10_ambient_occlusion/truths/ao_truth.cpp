@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "05_perspective/lab/ray_truth.hpp"
+#include "05_perspective/truths/ray_truth.hpp"
 #include "rasterlab/workers.hpp"
 
 namespace occlusion {
