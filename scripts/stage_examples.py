@@ -4,7 +4,7 @@ common/include against what the sources declare, as the compiler sees them
 (libclang parses every header in one translation unit):
 
 - every header has an example;
-- each qualified name an example uses (perspective::draw, rl::Image,
+- each qualified name an example uses (pipeline::draw, rl::Image,
   shading::ShadingModel::phong, ...) is declared, whole path included;
 - each call of a qualified function (textures::sample(a, b, c, d)) passes a
   number of arguments one of its overloads takes (defaults and packs counted).

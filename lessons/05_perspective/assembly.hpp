@@ -3,7 +3,7 @@
 // geometry (a MeshView, or any type with face_count() and corner(face, k)),
 // each triangle that comes out handed to the caller set up for the rasterizer.
 //
-//   perspective::assemble(perspective::MeshView(mesh), program, 800, 600, options, counts,
+//   pipeline::assemble(pipeline::MeshView(mesh), program, 800, 600, options, counts,
 //                         [&](const auto& t) { /* stages 5-8 for triangle t */ });
 #pragma once
 
@@ -17,7 +17,7 @@
 #include "rasterlab/transform.hpp"
 #include "triangle_setup.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // One corner of a mesh face, its attributes read on request.
 struct MeshCorner {
@@ -126,4 +126,4 @@ void assemble(const Geometry& geometry, const P& program, int width, int height,
 }
 // [/doc:assemble]
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -9,7 +9,7 @@
 
 #include "rasterlab/transform.hpp"
 
-namespace perspective {
+namespace pipeline {
 namespace {
 
 // The box's longest side: its size, without squares that would overflow a
@@ -163,4 +163,4 @@ void fit_depth_range(Camera& camera, const Box& box) {
     camera.near = std::max(nearest * 0.99f, camera.far * 1e-4f);
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -3,9 +3,9 @@
 // camera that frames a scene's bounding box when the user gives none.
 // Derivations: docs/05_perspective.md#the-camera.
 //
-//   perspective::Camera camera = perspective::frame_box(bounds, 50.0f, 4.0f / 3);
-//   perspective::check(camera);  // throws std::invalid_argument naming the option
-//   const rl::mat4 view_projection = perspective::view_projection(camera, 4.0f / 3);
+//   pipeline::Camera camera = pipeline::frame_box(bounds, 50.0f, 4.0f / 3);
+//   pipeline::check(camera);  // throws std::invalid_argument naming the option
+//   const rl::mat4 view_projection = pipeline::view_projection(camera, 4.0f / 3);
 #pragma once
 
 #include <limits>
@@ -15,7 +15,7 @@
 #include "rasterlab/mat.hpp"
 #include "rasterlab/mesh.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 struct Camera {
     rl::vec3 eye{0, 0, 3};
@@ -92,4 +92,4 @@ Camera frame_box(const Box& box, float fov_y, float aspect);
 // far / 10^4, so that an eye inside the box still gets a usable depth range).
 void fit_depth_range(Camera& camera, const Box& box);
 
-}  // namespace perspective
+}  // namespace pipeline

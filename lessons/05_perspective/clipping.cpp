@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace perspective {
+namespace pipeline {
 
 float guard_band(int width, int height) {
     // |window x| <= (g + 1) / 2 * size <= 2^21  <=>  g <= 2^22 / size - 1.
@@ -30,4 +30,4 @@ ClipPlanes clip_planes(ClipMode mode, int width, int height) {
 }
 // [/doc:clip-planes]
 
-}  // namespace perspective
+}  // namespace pipeline

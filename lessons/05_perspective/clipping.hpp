@@ -5,9 +5,9 @@
 // position at all; in clip space every plane is linear, so a straight line
 // cut is exact. Derivation and pictures: docs/05_perspective.md#clipping.
 //
-//   const perspective::ClipPolygon<rl::vec2> polygon = perspective::clip_triangle(
+//   const pipeline::ClipPolygon<rl::vec2> polygon = pipeline::clip_triangle(
 //       {{{p0, uv0}, {p1, uv1}, {p2, uv2}}},
-//       perspective::clip_planes(perspective::ClipMode::guard_band, 800, 600));
+//       pipeline::clip_planes(pipeline::ClipMode::guard_band, 800, 600));
 //   for (int i = 1; i + 1 < polygon.size; ++i)  // a fan: (0, i, i + 1)
 //       draw(polygon.vertices[0], polygon.vertices[i], polygon.vertices[i + 1]);
 #pragma once
@@ -19,7 +19,7 @@
 #include "rasterlab/vec.hpp"
 #include "varyings.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // Which planes a triangle is cut against:
 //   none        nothing: a vertex with w <= 0 lands on the wrong side of the
@@ -140,4 +140,4 @@ ClipPolygon<V> clip_triangle(const std::array<ClipVertex<V>, 3>& triangle,
     return polygon;
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -2,7 +2,7 @@
 // test, the fragment stage and the writes into the render target, in the
 // halves every coverage policy calls (sample_passes, shade, write_sample).
 //
-//   perspective::fragment_operations(program, t, x, y, z, weights, target, x, counts);
+//   pipeline::fragment_operations(program, t, x, y, z, weights, target, x, counts);
 #pragma once
 
 #include <algorithm>
@@ -17,7 +17,7 @@
 #include "render_target.hpp"
 #include "triangle_setup.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // Writes a fragment's outputs into the target's colour attachments: one
 // value for a target of one attachment, a tuple in attachment order for several.
@@ -96,4 +96,4 @@ void fragment_operations(const P& program, const TriangleSetup<V, F>& t, int x, 
 }
 // [/doc:fragment-operations]
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -15,14 +15,14 @@ int main(int argc, char** argv) {
         "projection, clipped in clip space, texture coordinates interpolated "
         "perspective-correctly."};
     rl::ImageOptions image_options{"05_perspective.tga"};
-    perspective::ViewOptions view;
-    perspective::RenderOptions options;
-    perspective::add_view_options(app, view, "floor, crate and globe from obj/");
+    pipeline::ViewOptions view;
+    pipeline::RenderOptions options;
+    pipeline::add_view_options(app, view, "floor, crate and globe from obj/");
     rl::add_image_options(app, image_options);
-    rl::add_method_option(app, "--clip", options.pipeline.clip, perspective::kClipModes, "Clipping");
+    rl::add_method_option(app, "--clip", options.pipeline.clip, pipeline::kClipModes, "Clipping");
     rl::add_method_option(app, "--interpolation", options.pipeline.interpolation,
-                          perspective::kInterpolations, "Interpolation of texture coordinates");
-    rl::add_method_option(app, "--lod", options.lod, perspective::kLodMethods,
+                          pipeline::kInterpolations, "Interpolation of texture coordinates");
+    rl::add_method_option(app, "--lod", options.lod, pipeline::kLodMethods,
                           "Mip level from each pixel's derivatives or one per triangle");
     rl::add_method_option(app, "--filter", options.sampler.filter, textures::kFilters,
                           "Texture filter");
@@ -32,14 +32,14 @@ int main(int argc, char** argv) {
         const std::string& output = image_options.output;
         const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
-        options.light = perspective::light_direction(view);
+        options.light = pipeline::light_direction(view);
         options.lighting = !no_light;
         std::vector<std::string> warnings;
-        const auto [models, camera] = perspective::load_scene(view, width, height, warnings);
+        const auto [models, camera] = pipeline::load_scene(view, width, height, warnings);
         rl::print_warnings("05_perspective", warnings);
 
-        perspective::ColourTarget frame = perspective::colour_target(width, height);
-        const perspective::PipelineCounts counts = perspective::render(models, camera, options, frame);
+        pipeline::ColourTarget frame = pipeline::colour_target(width, height);
+        const pipeline::PipelineCounts counts = pipeline::render(models, camera, options, frame);
         rl::save_image(output, frame.colour());
         std::printf(
             "%zu models (%zu culled by their boxes): %zu faces, %zu back faces, %zu clipped, "
@@ -49,8 +49,8 @@ int main(int argc, char** argv) {
             counts.outside, counts.drawn, counts.refused, counts.shaded,
             static_cast<double>(camera.eye.x), static_cast<double>(camera.eye.y),
             static_cast<double>(camera.eye.z), static_cast<double>(camera.near),
-            static_cast<double>(camera.far), perspective::name(options.pipeline.interpolation),
-            perspective::name(options.pipeline.clip), output.c_str());
+            static_cast<double>(camera.far), pipeline::name(options.pipeline.interpolation),
+            pipeline::name(options.pipeline.clip), output.c_str());
         return 0;
     });
 }

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-namespace perspective {
+namespace pipeline {
 
 PipelineCounts& PipelineCounts::operator+=(const PipelineCounts& o) {
     objects_culled += o.objects_culled;
@@ -45,4 +45,4 @@ bool outside_frustum(const Box& box, const rl::mat4& model_view_projection) {
 }
 // [/doc:outside-frustum]
 
-}  // namespace perspective
+}  // namespace pipeline

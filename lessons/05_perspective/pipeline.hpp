@@ -16,16 +16,16 @@
 //   struct TexturedProgram {
 //       rl::mat4 mvp; const textures::MipChain& texture;
 //       using Varyings = rl::vec2;                     // texture coordinates
-//       perspective::ClipVertex<rl::vec2> vertex(const perspective::MeshCorner& c) const {
-//           return {perspective::clip_position(mvp, c.position()), c.uv()};
+//       pipeline::ClipVertex<rl::vec2> vertex(const pipeline::MeshCorner& c) const {
+//           return {pipeline::clip_position(mvp, c.position()), c.uv()};
 //       }
-//       rl::Rgba fragment(const perspective::Fragment<rl::vec2>& f) const {
+//       rl::Rgba fragment(const pipeline::Fragment<rl::vec2>& f) const {
 //           const rl::vec4 texel = textures::sample(texture, f.varyings, {f.d_dx(), f.d_dy()}, {});
 //           return textures::to_rgba(texel);
 //       }
 //   };
-//   perspective::ColourTarget frame = perspective::colour_target(800, 600);
-//   perspective::draw(perspective::MeshView(mesh, model), TexturedProgram{mvp, chain}, frame);
+//   pipeline::ColourTarget frame = pipeline::colour_target(800, 600);
+//   pipeline::draw(pipeline::MeshView(mesh, model), TexturedProgram{mvp, chain}, frame);
 //
 // A stage per file: pipeline_options.hpp (what a draw may change, what it
 // counts), program.hpp (what a program declares), assembly.hpp (stages 1-4),
@@ -46,7 +46,7 @@
 #include "render_target.hpp"
 #include "triangle_setup.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // Throws OverdrawError for a draw that visited more than `most` samples.
 [[noreturn]] void throw_overdraw(double most);
@@ -139,4 +139,4 @@ double samples_to_visit(const Geometry& geometry, const P& program, int width, i
     return visits;
 }
 
-}  // namespace perspective
+}  // namespace pipeline

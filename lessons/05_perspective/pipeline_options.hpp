@@ -2,9 +2,9 @@
 // mode, the interpolation, the culling, lesson 02's rasterizer, a tile) and
 // what became of its work (PipelineCounts); pipeline.hpp draws with them.
 //
-//   perspective::PipelineOptions options;
-//   options.interpolation = perspective::Interpolation::affine;  // the lab's wrong one
-//   const perspective::PipelineCounts counts = perspective::draw(geometry, program, frame,
+//   pipeline::PipelineOptions options;
+//   options.interpolation = pipeline::Interpolation::affine;  // the lab's wrong one
+//   const pipeline::PipelineCounts counts = pipeline::draw(geometry, program, frame,
 //   options);
 #pragma once
 
@@ -18,7 +18,7 @@
 #include "02_triangles/raster.hpp"
 #include "clipping.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // How varyings are interpolated between a triangle's vertices: linearly in
 // the window (what lessons 02-04 did; wrong under perspective) or linearly
@@ -71,4 +71,4 @@ struct PipelineCounts {
     PipelineCounts& operator+=(const PipelineCounts& o);
 };
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -3,7 +3,7 @@
 // may discard (pipeline.hpp's opening comment shows a whole program).
 //
 //   struct Cutout { using Varyings = rl::vec2; static constexpr bool may_discard = true; ... };
-//   static_assert(perspective::ProgramTraits<Cutout>::may_discard);
+//   static_assert(pipeline::ProgramTraits<Cutout>::may_discard);
 #pragma once
 
 #include <concepts>
@@ -12,7 +12,7 @@
 #include "clipping.hpp"
 #include "varyings.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // A program's flat values (not interpolated: every pixel of a triangle gets
 // those of the face's first vertex, its "provoking vertex" as Direct3D and
@@ -44,4 +44,4 @@ concept Program = Interpolable<typename P::Varyings> && requires(const P& p, con
     { p.vertex(c) } -> std::same_as<ClipVertex<typename P::Varyings, FlatOf<P>>>;
 };
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -8,11 +8,11 @@
 // are lesson 11's. A target with no colour attachment is a depth-only pass
 // (how a shadow map is rendered).
 //
-//   perspective::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600);
-//   perspective::draw(geometry, program, frame);   // fragment() returns {rgba, normal}
-//   perspective::RenderTarget<> shadow_map(1024, 1024);  // depth only
-//   perspective::RenderTarget<rl::vec3> samples(800, 600, {.samples = 4}, rl::vec3{});
-//   perspective::draw(geometry, program, samples, {}, multisampling);  // lesson 11's policy
+//   pipeline::RenderTarget<rl::Rgba, rl::vec3> frame(800, 600);
+//   pipeline::draw(geometry, program, frame);   // fragment() returns {rgba, normal}
+//   pipeline::RenderTarget<> shadow_map(1024, 1024);  // depth only
+//   pipeline::RenderTarget<rl::vec3> samples(800, 600, {.samples = 4}, rl::vec3{});
+//   pipeline::draw(geometry, program, samples, {}, multisampling);  // lesson 11's policy
 #pragma once
 
 #include <algorithm>
@@ -28,7 +28,7 @@
 #include "rasterlab/image.hpp"
 #include "varyings.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 struct TargetOptions {
     int samples = 1;  // per pixel, at least 1 (with the width, at most an int's range of columns)
@@ -106,4 +106,4 @@ inline std::vector<triangles::PixelRect> tiles(int width, int height, int size) 
     return out;
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -4,7 +4,7 @@
 #include "04_textures/textured.hpp"
 #include "rasterlab/texture_files.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 TexturedModel load_model(const std::filesystem::path& path, const rl::mat4& transform,
                          std::vector<std::string>& warnings,
@@ -121,4 +121,4 @@ PipelineCounts render(const std::vector<TexturedModel>& models, const Camera& ca
 }
 // [/doc:render-model]
 
-}  // namespace perspective
+}  // namespace pipeline

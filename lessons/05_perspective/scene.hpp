@@ -3,10 +3,10 @@
 // pipeline. Texture level of detail comes from each pixel's UV derivatives
 // (or, to compare, lesson 04's per-triangle estimate).
 //
-//   std::vector<perspective::TexturedModel> models = perspective::default_scene(warnings);
-//   perspective::Camera camera = perspective::frame_box(perspective::scene_bounds(models), 50, 1);
-//   perspective::ColourTarget frame = perspective::colour_target(800, 800);
-//   perspective::render(models, camera, {}, frame);
+//   std::vector<pipeline::TexturedModel> models = pipeline::default_scene(warnings);
+//   pipeline::Camera camera = pipeline::frame_box(pipeline::scene_bounds(models), 50, 1);
+//   pipeline::ColourTarget frame = pipeline::colour_target(800, 800);
+//   pipeline::render(models, camera, {}, frame);
 #pragma once
 
 #include "rasterlab/named_enum.hpp"
@@ -19,7 +19,7 @@
 #include "pipeline.hpp"
 #include "view_options.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 struct TexturedModel {
     rl::Mesh mesh;
@@ -94,4 +94,4 @@ struct TexturedProgram {
 PipelineCounts render(const std::vector<TexturedModel>& models, const Camera& camera,
                       const RenderOptions& options, ColourTarget& frame);
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -3,9 +3,9 @@
 // one pixel's fragment with its interpolated varyings (Fragment, fragment_at).
 // Derivations: docs/05_perspective.md.
 //
-//   const auto t = perspective::set_up(a, b, c, perspective::NoFlat{}, face,
-//                                      perspective::Interpolation::perspective_correct, 800, 600);
-//   const auto f = perspective::fragment_at(t, x, y, z, weights);  // f.varyings, f.d_dx()
+//   const auto t = pipeline::set_up(a, b, c, pipeline::NoFlat{}, face,
+//                                      pipeline::Interpolation::perspective_correct, 800, 600);
+//   const auto f = pipeline::fragment_at(t, x, y, z, weights);  // f.varyings, f.d_dx()
 #pragma once
 
 #include <algorithm>
@@ -18,7 +18,7 @@
 #include "rasterlab/transform.hpp"
 #include "varyings.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // [doc:triangle-setup]
 // The per-triangle constants the per-pixel work needs, computed once after
@@ -135,4 +135,4 @@ Fragment<V, F> fragment_at(const TriangleSetup<V, F>& t, int x, int y, float z, 
     return {x, y, z, scaled(over_w, 1 / inverse_w), inverse_w, &t};
 }
 
-}  // namespace perspective
+}  // namespace pipeline

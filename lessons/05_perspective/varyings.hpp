@@ -5,7 +5,7 @@
 // arithmetic is written once, here, and no member can be forgotten.
 //
 //   struct Varyings { rl::vec3 normal; rl::vec2 uv; };   // nothing else to write
-//   const Varyings mid = perspective::blend(a, 0.5f, b, 0.5f);
+//   const Varyings mid = pipeline::blend(a, 0.5f, b, 0.5f);
 #pragma once
 
 #include <array>
@@ -17,7 +17,7 @@
 #include "rasterlab/mat.hpp"
 #include "rasterlab/vec.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // Made of floats: trivially copyable, a whole number of floats in size, and
 // aligned as a float (a member of another type, an int say, would be added
@@ -81,4 +81,4 @@ struct ClipVertex {
     [[no_unique_address]] Flat flat{};
 };
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -2,7 +2,7 @@
 
 #include <memory>
 
-namespace perspective {
+namespace pipeline {
 
 namespace {
 
@@ -39,4 +39,4 @@ void add_view_options(rl::CommandLine& app, ViewOptions& view, const std::string
     rl::add_light_option(app, view.light);
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -3,10 +3,10 @@
 // and --light, filling a ViewOptions (view_options.hpp). Only the programs
 // link this (and CLI11); the lessons' libraries do not.
 //
-//   perspective::ViewOptions view;
-//   perspective::add_view_options(app, view, "floor, crate and globe from obj/");
+//   pipeline::ViewOptions view;
+//   pipeline::add_view_options(app, view, "floor, crate and globe from obj/");
 //   if (const auto exit = app.parse(argc, argv)) return *exit;
-//   const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+//   const pipeline::Camera camera = pipeline::resolve_camera(view, box, aspect);
 #pragma once
 
 #include <string>
@@ -14,9 +14,9 @@
 #include "rasterlab/cli.hpp"
 #include "view_options.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // `default_scene` says in --help what runs without --model.
 void add_view_options(rl::CommandLine& app, ViewOptions& view, const std::string& default_scene);
 
-}  // namespace perspective
+}  // namespace pipeline

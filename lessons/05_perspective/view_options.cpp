@@ -5,7 +5,7 @@
 
 #include "rasterlab/direction.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 namespace {
 
@@ -50,4 +50,4 @@ rl::vec3 light_direction(const ViewOptions& view) {
     return to_vec3(view.light);
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -4,9 +4,9 @@
 // without near/far the planes sit just around it). The programs fill it from
 // their command line (view_cli.hpp); the Python module from keywords.
 //
-//   perspective::ViewOptions view;
+//   pipeline::ViewOptions view;
 //   view.eye = {0, 1, 4};
-//   const perspective::Camera camera = perspective::resolve_camera(view, box, aspect);
+//   const pipeline::Camera camera = pipeline::resolve_camera(view, box, aspect);
 #pragma once
 
 #include <cstddef>
@@ -15,7 +15,7 @@
 
 #include "camera.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // The most --model options a program takes: each copy is loaded whole (the
 // globe with its maps adds about 8.5 MiB to lesson 07: 64 took 553 MiB),
@@ -39,4 +39,4 @@ Camera resolve_camera(const ViewOptions& view, const Box& box, float aspect);
 // --light for one that cannot be normalised (0 0 0).
 rl::vec3 light_direction(const ViewOptions& view);
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -13,12 +13,12 @@ int main(int argc, char** argv) {
         "Lesson 06, shading: models lit by flat, Gouraud, Phong or Blinn-Phong shading, in "
         "linear light, through lesson 05's camera."};
     rl::ImageOptions image_options{"06_shading.tga"};
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     shading::ShadingOptions options;
     shading::Weighting weighting = shading::Weighting::angle;
     bool naive = false, one_light = false;
     float shininess = options.lighting.shininess;
-    perspective::add_view_options(app, view, "floor, globe and torus from obj/");
+    pipeline::add_view_options(app, view, "floor, globe and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--shading", options.model, shading::kShadingModels,
                           "Shading model");
@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
         const int width = image_options.width, height = image_options.height;
         rl::check_image_output(output);
         options.output = naive ? shading::Output::naive : shading::Output::srgb;
-        options.lighting = shading::default_lighting(perspective::light_direction(view));
+        options.lighting = shading::default_lighting(pipeline::light_direction(view));
         if (one_light) options.lighting.lights.resize(1);
         options.lighting.shininess = shininess;
         std::vector<std::string> warnings;
@@ -45,8 +45,8 @@ int main(int argc, char** argv) {
         rl::print_warnings("06_shading", warnings);
         std::size_t computed = 0;
         for (const shading::LitModel& m : models) computed += m.computed_normals;
-        perspective::ColourTarget frame = perspective::colour_target(width, height);
-        const perspective::PipelineCounts counts = shading::render(models, camera, options, frame);
+        pipeline::ColourTarget frame = pipeline::colour_target(width, height);
+        const pipeline::PipelineCounts counts = shading::render(models, camera, options, frame);
         rl::save_image(output, frame.colour());
         std::printf(
             "%zu models: %zu faces, %zu back faces, %zu clipped, %zu fragments shaded; %s "

@@ -7,7 +7,7 @@ namespace shading {
 
 LitModel load_lit_model(const std::filesystem::path& path, const rl::mat4& transform, Output output,
                         Weighting weighting, std::vector<std::string>& warnings) {
-    LitModel lit{perspective::load_model(path, transform, warnings,
+    LitModel lit{pipeline::load_model(path, transform, warnings,
                                       output == Output::srgb ? &srgb_texels() : nullptr),
                  {},
                  0};
@@ -29,29 +29,29 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
     return models;
 }
 
-perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
+pipeline::ViewedScene<LitModel> load_scene(const pipeline::ViewOptions& view, Output output,
                                            Weighting weighting, int width, int height,
                                            std::vector<std::string>& warnings) {
     const rl::TexelBudget budget;  // for the textures of all the models together
-    perspective::ViewedScene<LitModel> scene;
+    pipeline::ViewedScene<LitModel> scene;
     if (view.models.empty()) scene.models = default_scene(output, weighting, warnings);
     for (const std::string& path : view.models)
         scene.models.push_back(
             load_lit_model(path, rl::mat4::identity(), output, weighting, warnings));
-    perspective::Box box;
+    pipeline::Box box;
     for (const LitModel& m : scene.models)
-        box.add(perspective::bounds(m.model.mesh, m.model.transform));
-    scene.camera = perspective::view_camera(view, box, width, height, warnings);
+        box.add(pipeline::bounds(m.model.mesh, m.model.transform));
+    scene.camera = pipeline::view_camera(view, box, width, height, warnings);
     return scene;
 }
 
 std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection,
-                            const perspective::Camera& camera, const Lighting<float>& lighting,
+                            const pipeline::Camera& camera, const Lighting<float>& lighting,
                             const textures::SamplerState& sampler, bool cull_objects,
-                            perspective::PipelineCounts& counts) {
-    const perspective::TexturedModel& m = lit.model;
+                            pipeline::PipelineCounts& counts) {
+    const pipeline::TexturedModel& m = lit.model;
     const rl::mat4 mvp = view_projection * m.transform;
-    if (cull_objects && perspective::outside_frustum(m.box, mvp)) {
+    if (cull_objects && pipeline::outside_frustum(m.box, mvp)) {
         ++counts.objects_culled;
         return std::nullopt;
     }
@@ -71,14 +71,14 @@ std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection
 }
 
 // [doc:render-lit]
-perspective::PipelineCounts render(const std::vector<LitModel>& models, const perspective::Camera& camera,
-                                const ShadingOptions& options, perspective::ColourTarget& frame) {
+pipeline::PipelineCounts render(const std::vector<LitModel>& models, const pipeline::Camera& camera,
+                                const ShadingOptions& options, pipeline::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    const rl::mat4 view_projection = pipeline::view_projection(camera, aspect);
     textures::SamplerState sampler;
     sampler.filter = options.filter;
     sampler.encoding = options.output == Output::srgb ? &srgb_texels() : nullptr;
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
     for (const LitModel& lit : models)
         if (const std::optional<Placed> p = place(lit, view_projection, camera, options.lighting,
                                                   sampler, options.cull_objects, counts))

@@ -13,7 +13,7 @@
 namespace shading {
 
 struct LitModel {
-    perspective::TexturedModel model;
+    pipeline::TexturedModel model;
     std::vector<rl::vec3> normals;     // 3 per face
     std::size_t computed_normals = 0;  // corners the OBJ gave no (usable) normal for
 };
@@ -29,12 +29,12 @@ std::vector<LitModel> default_scene(Output output, Weighting weighting,
 
 // The default scene (or the view's models, as stored) and the camera framing
 // it, as lesson 06's program draws them.
-perspective::ViewedScene<LitModel> load_scene(const perspective::ViewOptions& view, Output output,
+pipeline::ViewedScene<LitModel> load_scene(const pipeline::ViewOptions& view, Output output,
                                            Weighting weighting, int width, int height,
                                            std::vector<std::string>& warnings);
 
 struct ShadingOptions {
-    perspective::PipelineOptions pipeline;
+    pipeline::PipelineOptions pipeline;
     bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
     ShadingModel model = ShadingModel::blinn_phong;
     Output output = Output::srgb;
@@ -52,11 +52,11 @@ struct Placed {
     Surface surface;
 };
 std::optional<Placed> place(const LitModel& lit, const rl::mat4& view_projection,
-                            const perspective::Camera& camera, const Lighting<float>& lighting,
+                            const pipeline::Camera& camera, const Lighting<float>& lighting,
                             const textures::SamplerState& sampler, bool cull_objects,
-                            perspective::PipelineCounts& counts);
+                            pipeline::PipelineCounts& counts);
 
-perspective::PipelineCounts render(const std::vector<LitModel>& models, const perspective::Camera& camera,
-                                const ShadingOptions& options, perspective::ColourTarget& frame);
+pipeline::PipelineCounts render(const std::vector<LitModel>& models, const pipeline::Camera& camera,
+                                const ShadingOptions& options, pipeline::ColourTarget& frame);
 
 }  // namespace shading

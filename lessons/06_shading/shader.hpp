@@ -26,7 +26,7 @@ namespace shading {
 
 // One corner of a surface as the vertex function reads it: lesson 05's mesh
 // corner (position, uv) and its unit normal.
-struct SurfaceCorner : perspective::MeshCorner {
+struct SurfaceCorner : pipeline::MeshCorner {
     const std::vector<rl::vec3>* normals;  // 3 per face
     rl::vec3 normal() const {
         return (*normals)[3 * static_cast<std::size_t>(face) + static_cast<std::size_t>(corner)];
@@ -39,7 +39,7 @@ struct SurfaceCorner : perspective::MeshCorner {
 // A mesh with a normal per corner, ready to shade; mirroring as lesson 05's
 // MeshView decides it from the model matrix.
 struct Surface {
-    perspective::MeshView view;
+    pipeline::MeshView view;
     const std::vector<rl::vec3>* normals;  // 3 per face: corner_normals(mesh, ...)
     Surface(const rl::Mesh& mesh, const std::vector<rl::vec3>& corner_normals,
             const rl::mat4& model = rl::mat4::identity())
@@ -49,9 +49,9 @@ struct Surface {
 };
 
 template <class S>
-concept Shader = perspective::Program<S, SurfaceCorner> &&
+concept Shader = pipeline::Program<S, SurfaceCorner> &&
     requires(const S& shader,
-             const perspective::Fragment<typename S::Varyings, perspective::FlatOf<S>>& f) {
+             const pipeline::Fragment<typename S::Varyings, pipeline::FlatOf<S>>& f) {
     shader.fragment(f);
 };
 
@@ -61,12 +61,12 @@ struct Encoded {
     const S& shader;
     Output output;
     using Varyings = typename S::Varyings;
-    using Flat = perspective::FlatOf<S>;
-    static constexpr bool may_discard = perspective::ProgramTraits<S>::may_discard;
-    perspective::ClipVertex<Varyings, Flat> vertex(const SurfaceCorner& c) const {
+    using Flat = pipeline::FlatOf<S>;
+    static constexpr bool may_discard = pipeline::ProgramTraits<S>::may_discard;
+    pipeline::ClipVertex<Varyings, Flat> vertex(const SurfaceCorner& c) const {
         return shader.vertex(c);
     }
-    auto fragment(const perspective::Fragment<Varyings, Flat>& f) const {
+    auto fragment(const pipeline::Fragment<Varyings, Flat>& f) const {
         if constexpr (may_discard) {
             const std::optional<rl::vec3> c = shader.fragment(f);
             return c ? std::optional<rl::Rgba>(encode(*c, output)) : std::nullopt;
@@ -80,11 +80,11 @@ struct Encoded {
 // Every face of the surface through the pipeline with this shader; the
 // fragment's linear colour is written encoded by `output`.
 template <Shader S>
-perspective::PipelineCounts draw(const Surface& surface, const S& shader,
-                              perspective::ColourTarget& target,
-                              const perspective::PipelineOptions& options,
+pipeline::PipelineCounts draw(const Surface& surface, const S& shader,
+                              pipeline::ColourTarget& target,
+                              const pipeline::PipelineOptions& options,
                               Output output = Output::srgb) {
-    return perspective::draw(surface, Encoded<S>{shader, output}, target, options);
+    return pipeline::draw(surface, Encoded<S>{shader, output}, target, options);
 }
 // [/doc:draw-shader]
 

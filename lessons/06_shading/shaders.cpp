@@ -13,9 +13,9 @@ Reflection<float> light_at(const Uniforms& u, rl::vec3 world_position, rl::vec3 
                       Specular::blinn_phong);
 }
 
-perspective::PipelineCounts draw_model(ShadingModel model, const Surface& surface, const Uniforms& u,
-                                    perspective::ColourTarget& target,
-                                    const perspective::PipelineOptions& options, Output output) {
+pipeline::PipelineCounts draw_model(ShadingModel model, const Surface& surface, const Uniforms& u,
+                                    pipeline::ColourTarget& target,
+                                    const pipeline::PipelineOptions& options, Output output) {
     switch (model) {
         case ShadingModel::flat:
             return draw(surface, FlatShader{u}, target, options, output);

@@ -39,8 +39,8 @@ struct Uniforms {
 
     rl::vec3 world(rl::vec3 p) const { return (model_matrix * rl::extend(p, 1.0f)).xyz(); }
     rl::vec3 world_normal(rl::vec3 n) const { return rl::normalize(normal_matrix * n); }
-    perspective::ClipPosition clip(rl::vec3 p) const {
-        return perspective::clip_position(model_view_projection, p);
+    pipeline::ClipPosition clip(rl::vec3 p) const {
+        return pipeline::clip_position(model_view_projection, p);
     }
     // The diffuse colour at a pixel: the texture (mip level from the pixel's
     // UV derivatives, lesson 05) or the plain colour.
@@ -57,10 +57,10 @@ struct UnlitShader {
     rl::mat4 model_view_projection;
     rl::vec3 colour;         // linear
     using Varyings = float;  // nothing to carry to the pixels
-    perspective::ClipVertex<float> vertex(const SurfaceCorner& in) const {
-        return {perspective::clip_position(model_view_projection, in.position()), 0.0f};
+    pipeline::ClipVertex<float> vertex(const SurfaceCorner& in) const {
+        return {pipeline::clip_position(model_view_projection, in.position()), 0.0f};
     }
-    rl::vec3 fragment(const perspective::Fragment<float>&) const { return colour; }
+    rl::vec3 fragment(const pipeline::Fragment<float>&) const { return colour; }
 };
 // [/doc:unlit-shader]
 
@@ -69,11 +69,11 @@ struct FlatShader {
     const Uniforms& u;
     using Varyings = rl::vec2;       // the texture coordinates
     using Flat = Reflection<float>;  // the light, from the face's first vertex
-    perspective::ClipVertex<Varyings, Flat> vertex(const SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings, Flat> vertex(const SurfaceCorner& in) const {
         return {u.clip(in.position()), in.uv(),
                 light_at(u, u.world(in.position()), u.world_normal(in.face_normal()))};
     }
-    rl::vec3 fragment(const perspective::Fragment<Varyings, Flat>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings, Flat>& f) const {
         const Reflection<float>& l = f.flat();
         return u.albedo(f.varyings, f.d_dx(), f.d_dy()) * l.diffuse + l.specular;
     }
@@ -86,12 +86,12 @@ struct GouraudShader {
         rl::vec3 diffuse, specular;  // light computed at the vertices, interpolated
         rl::vec2 uv;
     };
-    perspective::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
         const Reflection<float> l =
             light_at(u, u.world(in.position()), u.world_normal(in.normal()));
         return {u.clip(in.position()), {l.diffuse, l.specular, in.uv()}};
     }
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         return u.albedo(f.varyings.uv, f.d_dx(&Varyings::uv), f.d_dy(&Varyings::uv)) *
                    f.varyings.diffuse +
                f.varyings.specular;
@@ -106,11 +106,11 @@ struct PhongShader {
         rl::vec3 position, normal;  // world space, interpolated across the face
         rl::vec2 uv;
     };
-    perspective::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
         return {u.clip(in.position()),
                 {u.world(in.position()), u.world_normal(in.normal()), in.uv()}};
     }
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         // An interpolated unit normal is shorter than 1 between the vertices:
         // normalise it again, or the light dims and the highlight spreads.
         const rl::vec3 n = rl::normalize(f.varyings.normal);
@@ -123,8 +123,8 @@ struct PhongShader {
 // [/doc:phong-shader]
 
 // Draws the surface with the chosen shading model.
-perspective::PipelineCounts draw_model(ShadingModel model, const Surface& surface, const Uniforms& u,
-                                    perspective::ColourTarget& target,
-                                    const perspective::PipelineOptions& options, Output output);
+pipeline::PipelineCounts draw_model(ShadingModel model, const Surface& surface, const Uniforms& u,
+                                    pipeline::ColourTarget& target,
+                                    const pipeline::PipelineOptions& options, Output output);
 
 }  // namespace shading

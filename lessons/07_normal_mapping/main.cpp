@@ -26,9 +26,9 @@ int main(int argc, char** argv) {
 
         if (options.filter == textures::Filter::trilinear) normal_mapping::build_mip_levels(models);
         // [doc:lesson07-main]
-        perspective::ColourTarget frame = perspective::colour_target(width, height);
+        pipeline::ColourTarget frame = pipeline::colour_target(width, height);
         const auto start = std::chrono::steady_clock::now();
-        const perspective::PipelineCounts counts =
+        const pipeline::PipelineCounts counts =
             normal_mapping::render(models, camera, options, frame);
         const std::chrono::duration<double, std::milli> took =
             std::chrono::steady_clock::now() - start;

@@ -5,7 +5,7 @@
 namespace normal_mapping {
 
 void add_mapped_options(rl::CommandLine& app, MappedCli& cli, const std::string& default_scene) {
-    perspective::add_view_options(app, cli.view, default_scene);
+    pipeline::add_view_options(app, cli.view, default_scene);
     rl::add_method_option(app, "--normal-map", cli.options.normal_map, kNormalMaps,
                           "Normal map to use");
     rl::add_method_option(app, "--tangents", cli.tangents, kTangentMethods, "Tangent frames");

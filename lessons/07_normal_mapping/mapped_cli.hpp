@@ -22,7 +22,7 @@ using MappedCli = MappedView;  // (scene.hpp)
 
 void add_mapped_options(rl::CommandLine& app, MappedCli& cli, const std::string& default_scene);
 
-using MappedScene = perspective::ViewedScene<MappedModel>;
+using MappedScene = pipeline::ViewedScene<MappedModel>;
 
 // normal_mapping::load_scene(), its warnings printed under `program`'s name.
 MappedScene load_scene(MappedCli& cli, int width, int height, const char* program);

@@ -58,7 +58,7 @@ struct NormalMappedShader {
     const std::vector<rl::vec4>* tangents = nullptr;
     textures::Filter map_filter = textures::Filter::trilinear;  // for the normal and specular maps
 
-    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         const rl::vec4 t = (*tangents)[3 * static_cast<std::size_t>(in.face) +
                                        static_cast<std::size_t>(in.corner)];
         // A tangent is a direction along the surface: it transforms like a
@@ -74,7 +74,7 @@ struct NormalMappedShader {
     // a direction (filtering a 127/128 checker averages to 0) keeps the
     // interpolated normal, as lesson 06 does for a zero normal in the OBJ.
     // (dx, dy: the texture coordinates' screen derivatives, for the mip level.)
-    rl::vec3 normal_at(const perspective::Fragment<Varyings>& f, rl::vec2 dx, rl::vec2 dy) const {
+    rl::vec3 normal_at(const pipeline::Fragment<Varyings>& f, rl::vec2 dx, rl::vec2 dy) const {
         const Varyings& v = f.varyings;
         const rl::vec3 n = rl::normalize(v.normal);
         if (source == NormalMap::tangent && maps.tangent_normals) {
@@ -95,7 +95,7 @@ struct NormalMappedShader {
         return n;
     }
 
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         const rl::vec3 n = normal_at(f, dx, dy);

@@ -42,21 +42,21 @@ std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::st
     return models;
 }
 
-perspective::Box scene_box(const std::vector<MappedModel>& models) {
-    perspective::Box box;
+pipeline::Box scene_box(const std::vector<MappedModel>& models) {
+    pipeline::Box box;
     for (const MappedModel& m : models)
-        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
+        box.add(pipeline::bounds(m.lit.model.mesh, m.lit.model.transform));
     return box;
 }
 
-perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
+pipeline::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
                                               std::vector<std::string>& warnings) {
     const rl::TexelBudget budget;  // for the textures of all the models together
     RenderOptions& options = request.options;
-    options.lighting = shading::default_lighting(perspective::light_direction(request.view));
+    options.lighting = shading::default_lighting(pipeline::light_direction(request.view));
     if (request.one_light) options.lighting.lights.resize(1);
     options.output = request.naive ? shading::Output::naive : shading::Output::srgb;
-    perspective::ViewedScene<MappedModel> scene;
+    pipeline::ViewedScene<MappedModel> scene;
     const std::optional<NormalMap> only =
         request.every_normal_map ? std::nullopt : std::optional(options.normal_map);
     if (request.view.models.empty())
@@ -65,20 +65,20 @@ perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width,
         scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), request.tangents,
                                                  warnings, options.output, only));
     scene.camera =
-        perspective::view_camera(request.view, scene_box(scene.models), width, height, warnings);
+        pipeline::view_camera(request.view, scene_box(scene.models), width, height, warnings);
     return scene;
 }
 
-perspective::ViewedScene<MappedModel> load_view(
-    const perspective::ViewOptions& view, TangentMethod tangents, int width, int height,
+pipeline::ViewedScene<MappedModel> load_view(
+    const pipeline::ViewOptions& view, TangentMethod tangents, int width, int height,
     std::vector<std::string>& warnings,
     const std::function<std::vector<MappedModel>(std::vector<std::string>&)>& default_models) {
     const rl::TexelBudget budget;  // for the textures of all the models together
-    perspective::ViewedScene<MappedModel> scene;
+    pipeline::ViewedScene<MappedModel> scene;
     if (view.models.empty()) scene.models = default_models(warnings);
     for (const std::string& path : view.models)  // as stored: the identity model matrix
         scene.models.push_back(load_mapped_model(path, rl::mat4::identity(), tangents, warnings));
-    scene.camera = perspective::view_camera(view, scene_box(scene.models), width, height, warnings);
+    scene.camera = pipeline::view_camera(view, scene_box(scene.models), width, height, warnings);
     return scene;
 }
 
@@ -109,15 +109,15 @@ NormalMappedShader shader_for(const MappedModel& model, const shading::Placed& p
 }
 
 // [doc:render-mapped]
-perspective::PipelineCounts render(const std::vector<MappedModel>& models,
-                                const perspective::Camera& camera, const RenderOptions& options,
-                                perspective::ColourTarget& frame) {
+pipeline::PipelineCounts render(const std::vector<MappedModel>& models,
+                                const pipeline::Camera& camera, const RenderOptions& options,
+                                pipeline::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    const rl::mat4 view_projection = pipeline::view_projection(camera, aspect);
     textures::SamplerState sampler;  // the diffuse texture: sRGB unless naive
     sampler.filter = options.filter;
     sampler.encoding = options.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr;
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
     for (const MappedModel& m : models) {
         const std::optional<shading::Placed> p =
             shading::place(m.lit, view_projection, camera, options.lighting, sampler,

@@ -32,7 +32,7 @@ std::vector<MappedModel> default_scene(TangentMethod method, std::vector<std::st
                                        std::optional<NormalMap> only = std::nullopt);
 
 struct RenderOptions {
-    perspective::PipelineOptions pipeline;
+    pipeline::PipelineOptions pipeline;
     bool cull_objects = true;  // skip a model whose bounding box is outside the frustum
     NormalMap normal_map = NormalMap::tangent;
     shading::Specular specular = shading::Specular::blinn_phong;
@@ -47,13 +47,13 @@ NormalMappedShader shader_for(const MappedModel& model, const shading::Placed& p
                               const RenderOptions& options);
 
 // The box around every model, in world space.
-perspective::Box scene_box(const std::vector<MappedModel>& models);
+pipeline::Box scene_box(const std::vector<MappedModel>& models);
 
 // What lesson 07's program is asked for (by its command line, mapped_cli.hpp,
 // or the Python module's keywords): the view, the render options, the tangent
 // frames, sRGB or naive output, one light or two.
 struct MappedView {
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     RenderOptions options;
     TangentMethod tangents = TangentMethod::split;
     bool naive = false, one_light = false;
@@ -64,15 +64,15 @@ struct MappedView {
 // loads the default scene (or the view's models, as stored) and frames the
 // camera for a width x height image. Throws std::invalid_argument (naming
 // the option) for a camera it cannot use.
-perspective::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
+pipeline::ViewedScene<MappedModel> load_scene(MappedView& request, int width, int height,
                                               std::vector<std::string>& warnings);
 
 // The models a view asks for: `default_models(warnings)` when it names
 // none, else its files as stored (the identity model matrix, with
 // `tangents`), and the camera framing them for a width x height image.
 // Lessons 08 and 09 load their scenes with it.
-perspective::ViewedScene<MappedModel> load_view(
-    const perspective::ViewOptions& view, TangentMethod tangents, int width, int height,
+pipeline::ViewedScene<MappedModel> load_view(
+    const pipeline::ViewOptions& view, TangentMethod tangents, int width, int height,
     std::vector<std::string>& warnings,
     const std::function<std::vector<MappedModel>(std::vector<std::string>&)>& default_models);
 
@@ -81,8 +81,8 @@ perspective::ViewedScene<MappedModel> load_view(
 // rendering alone.
 void build_mip_levels(const std::vector<MappedModel>& models);
 
-perspective::PipelineCounts render(const std::vector<MappedModel>& models,
-                                const perspective::Camera& camera, const RenderOptions& options,
-                                perspective::ColourTarget& frame);
+pipeline::PipelineCounts render(const std::vector<MappedModel>& models,
+                                const pipeline::Camera& camera, const RenderOptions& options,
+                                pipeline::ColourTarget& frame);
 
 }  // namespace normal_mapping

@@ -45,26 +45,26 @@ rl::mat4 orthographic(float left, float right, float bottom, float top, float ne
                      rl::vec4{0, 0, 0, 1}}};
 }
 
-perspective::Box visible_box(const perspective::Camera& camera, float aspect,
-                          const perspective::Box& scene) {
+pipeline::Box visible_box(const pipeline::Camera& camera, float aspect,
+                          const pipeline::Box& scene) {
     const rl::vec3 forward = rl::normalize(camera.target - camera.eye);
     const rl::vec3 right = rl::normalize(rl::cross(forward, camera.up));
     const rl::vec3 up = rl::cross(right, forward);
     const float tan_y = std::tan(0.5f * rl::radians(camera.fov_y)), tan_x = tan_y * aspect;
-    perspective::Box frustum;
+    pipeline::Box frustum;
     for (const float d : {camera.near, camera.far})
         for (const float sx : {-1.0f, 1.0f})
             for (const float sy : {-1.0f, 1.0f})
                 frustum.add(camera.eye + forward * d + right * (sx * d * tan_x) +
                             up * (sy * d * tan_y));
-    perspective::Box out;
+    pipeline::Box out;
     out.min = componentwise(frustum.min, scene.min, std::max<float>);
     out.max = componentwise(frustum.max, scene.max, std::min<float>);
     return out;
 }
 
-LightView light_view(const ShadowLight& light, const perspective::Box& covered,
-                     const perspective::Box& casters) {
+LightView light_view(const ShadowLight& light, const pipeline::Box& covered,
+                     const pipeline::Box& casters) {
     if (covered.empty()) throw std::invalid_argument("the shadow map has nothing to cover");
     if (!(rl::length(light.direction) > 0) || !std::isfinite(rl::length(light.direction)))
         throw std::invalid_argument("--light: the light needs a direction");
@@ -77,7 +77,7 @@ LightView light_view(const ShadowLight& light, const perspective::Box& covered,
     if (light.type == LightType::directional) {
         out.position = centre + towards * (2 * radius);
         const rl::mat4 view = light_look_at(out.position, centre, out.direction);
-        perspective::Box in_light;  // the covered box's corners in the light's view space
+        pipeline::Box in_light;  // the covered box's corners in the light's view space
         for (int i = 0; i < 8; ++i) in_light.add(transform_point(view, covered.corner(i)));
         // Casters nearer the light than the receivers (larger view-space z)
         // push the near plane out; the sides stay the receivers'.

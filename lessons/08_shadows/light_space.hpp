@@ -50,7 +50,7 @@ rl::mat4 orthographic(float left, float right, float bottom, float top, float ne
 
 // The part of `scene` the camera can see: the box around the view
 // frustum's eight corners, clipped to the scene's box.
-perspective::Box visible_box(const perspective::Camera& camera, float aspect, const perspective::Box& scene);
+pipeline::Box visible_box(const pipeline::Camera& camera, float aspect, const pipeline::Box& scene);
 
 // The light's view fitted around `covered`, the receivers: a directional
 // light's orthographic box holds all its corners; a spot light's frustum
@@ -60,9 +60,9 @@ perspective::Box visible_box(const perspective::Camera& camera, float aspect, co
 // whole scene's box): a caster outside the camera's view can still stand
 // between the light and a point the camera sees, and the map must hold it.
 // Throws std::invalid_argument for an empty box or a zero direction.
-LightView light_view(const ShadowLight& light, const perspective::Box& covered,
-                     const perspective::Box& casters);
-inline LightView light_view(const ShadowLight& light, const perspective::Box& covered) {
+LightView light_view(const ShadowLight& light, const pipeline::Box& covered,
+                     const pipeline::Box& casters);
+inline LightView light_view(const ShadowLight& light, const pipeline::Box& covered) {
     return light_view(light, covered, covered);
 }
 

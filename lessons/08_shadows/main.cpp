@@ -16,14 +16,14 @@ int main(int argc, char** argv) {
         "Lesson 08, shadows: lesson 07's render with shadows from a shadow map, of a directional "
         "or a spot light."};
     rl::ImageOptions image_options{"08_shadows.tga"};
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     shadows::ShadowOptions options;
     normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
     shadows::Show show = shadows::Show::image;
     shadows::MapFaces map_faces = shadows::MapFaces::front;
     std::vector<float> light_position;
     view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
-    perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
+    pipeline::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--light-type", options.light.type, shadows::kLightTypes,
                           "The light that casts the shadows (--light: the direction towards it)");
@@ -83,7 +83,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> warnings;
         const auto [models, camera] = shadows::load_scene(view, tangents, width, height, warnings);
         rl::print_warnings("08_shadows", warnings);
-        const perspective::Box box = shadows::scene_box(models);
+        const pipeline::Box box = shadows::scene_box(models);
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         shadows::place_spot(options, box, light_position);
 
@@ -93,8 +93,8 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, options);
         const auto mapped = std::chrono::steady_clock::now();
-        perspective::ColourTarget frame = perspective::colour_target(width, height);
-        const perspective::PipelineCounts counts =
+        pipeline::ColourTarget frame = pipeline::colour_target(width, height);
+        const pipeline::PipelineCounts counts =
             shadows::render(models, camera, options, map, frame);
         const auto done = std::chrono::steady_clock::now();
         rl::save_image(output, show == shadows::Show::shadow_map ? zbuffer::depth_picture(map.depth)

@@ -22,14 +22,14 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
     return models;
 }
 
-perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
-    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+pipeline::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const pipeline::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings) {
     return normal_mapping::load_view(view, tangents, width, height, warnings, default_scene);
 }
 
-void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bool one_light) {
-    options.light.direction = rl::normalize(perspective::light_direction(view));
+void set_lights(ShadowOptions& options, const pipeline::ViewOptions& view, bool one_light) {
+    options.light.direction = rl::normalize(pipeline::light_direction(view));
     options.render.lighting = shading::default_lighting(options.light.direction);
     if (one_light) options.render.lighting.lights.resize(1);
 }
@@ -43,22 +43,22 @@ void refuse_spot_options(LightType type, bool position_given, bool cone_given) {
         throw std::invalid_argument("--cone: only a spot light has a cone (add --light-type spot)");
 }
 
-void place_spot(ShadowOptions& options, const perspective::Box& box,
+void place_spot(ShadowOptions& options, const pipeline::Box& box,
                 const std::vector<float>& position) {
     if (options.light.type != LightType::spot) return;
     options.light.position = position.empty() ? default_spot_position(box, options.light.direction)
                                               : rl::vec3{position[0], position[1], position[2]};
 }
 
-rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_light) {
+rl::vec3 default_spot_position(const pipeline::Box& box, rl::vec3 towards_light) {
     return box.centre() + rl::normalize(towards_light) * rl::length(box.max - box.min);
 }
 
 LightView light_view_for(const std::vector<normal_mapping::MappedModel>& models,
-                         const perspective::Camera& camera, float aspect,
+                         const pipeline::Camera& camera, float aspect,
                          const ShadowOptions& options) {
-    const perspective::Box scene = scene_box(models);
-    perspective::Box covered = options.fit == Fit::view ? visible_box(camera, aspect, scene) : scene;
+    const pipeline::Box scene = scene_box(models);
+    pipeline::Box covered = options.fit == Fit::view ? visible_box(camera, aspect, scene) : scene;
     if (covered.empty()) covered = scene;  // the camera sees none of it: any map will do
     if (scene.empty()) {                   // no geometry at all: a map with nothing in it
         covered.add(rl::vec3{-1, -1, -1});
@@ -68,7 +68,7 @@ LightView light_view_for(const std::vector<normal_mapping::MappedModel>& models,
 }
 
 ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
-                         const perspective::Camera& camera, float aspect,
+                         const pipeline::Camera& camera, float aspect,
                          const ShadowOptions& options) {
     // (Chosen by reference: the ternary of a reference and a temporary would
     // copy every model, meshes and textures, into a temporary.)
@@ -87,9 +87,9 @@ SplitLighting split_lighting(const ShadowOptions& options) {
 }
 
 // [doc:render-shadowed]
-perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                const perspective::Camera& camera, const ShadowOptions& options,
-                                const ShadowMap& map, perspective::ColourTarget& frame) {
+pipeline::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                const pipeline::Camera& camera, const ShadowOptions& options,
+                                const ShadowMap& map, pipeline::ColourTarget& frame) {
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
     return draw_shadowed(models, camera, aspect, options, map,
                          [&](const normal_mapping::MappedModel&, const shading::Surface& surface,

@@ -31,8 +31,8 @@ RASTERLAB_NAMED_ENUM(Show, kShows, {Show::image, "image"}, {Show::shadow_map, "s
 // culled), or those facing away.
 enum class MapFaces { front, back };
 RASTERLAB_NAMED_ENUM(MapFaces, kMapFaces, {MapFaces::front, "front"}, {MapFaces::back, "back"});
-inline perspective::Cull cull_for(MapFaces faces) {
-    return faces == MapFaces::front ? perspective::Cull::back : perspective::Cull::front;
+inline pipeline::Cull cull_for(MapFaces faces) {
+    return faces == MapFaces::front ? pipeline::Cull::back : pipeline::Cull::front;
 }
 
 // The program's --light: from the right, in front, so that the crate and the
@@ -47,18 +47,18 @@ using normal_mapping::scene_box;  // the box around every model
 
 // The default scene (or the view's models, as stored, with `tangents`) and
 // the camera framing it, as lesson 08's program draws them.
-perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
-    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+pipeline::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const pipeline::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings);
 
 // A spot light's default place: on the --light direction from the scene's
 // centre, twice the scene's radius away.
-rl::vec3 default_spot_position(const perspective::Box& box, rl::vec3 towards_light);
+rl::vec3 default_spot_position(const pipeline::Box& box, rl::vec3 towards_light);
 
 // The lights the view asks for: the key light's direction (--light, made
 // unit), lesson 07's lighting from it (with its dim fill light unless
 // `one_light`). Throws std::invalid_argument naming --light for 0 0 0.
-void set_lights(ShadowOptions& options, const perspective::ViewOptions& view, bool one_light);
+void set_lights(ShadowOptions& options, const pipeline::ViewOptions& view, bool one_light);
 
 // Throws std::invalid_argument naming the option when a spot light's own
 // options (--light-position, --cone) come with another kind of light: they
@@ -67,18 +67,18 @@ void refuse_spot_options(LightType type, bool position_given, bool cone_given);
 
 // A spot light's place: `position` (three numbers) if given, else
 // default_spot_position(); nothing for a directional light.
-void place_spot(ShadowOptions& options, const perspective::Box& box,
+void place_spot(ShadowOptions& options, const pipeline::Box& box,
                 const std::vector<float>& position);
 
 // Where the first pass looks from: the light's view fitted to the scene, or
 // to what the camera sees of it. `aspect`: the camera's width / height.
 LightView light_view_for(const std::vector<normal_mapping::MappedModel>& models,
-                         const perspective::Camera& camera, float aspect,
+                         const pipeline::Camera& camera, float aspect,
                          const ShadowOptions& options);
 
 // The first pass, from light_view_for's view.
 ShadowMap shadow_map_for(const std::vector<normal_mapping::MappedModel>& models,
-                         const perspective::Camera& camera, float aspect,
+                         const pipeline::Camera& camera, float aspect,
                          const ShadowOptions& options);
 
 // The key light, tested against the map (the options' first light, from
@@ -92,17 +92,17 @@ SplitLighting split_lighting(const ShadowOptions& options);
 // Each model of the second pass, placed and given its shader, handed to
 // draw(model, surface, shader), which returns the counts of its draw.
 template <class Draw>
-perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::MappedModel>& models,
-                                       const perspective::Camera& camera, float aspect,
+pipeline::PipelineCounts draw_shadowed(const std::vector<normal_mapping::MappedModel>& models,
+                                       const pipeline::Camera& camera, float aspect,
                                        const ShadowOptions& options, const ShadowMap& map,
                                        Draw&& draw) {
     const normal_mapping::RenderOptions& r = options.render;
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    const rl::mat4 view_projection = pipeline::view_projection(camera, aspect);
     textures::SamplerState sampler;
     sampler.filter = r.filter;
     sampler.encoding = r.output == shading::Output::srgb ? &shading::srgb_texels() : nullptr;
     const SplitLighting lights = split_lighting(options);
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
     for (const normal_mapping::MappedModel& m : models) {
         const std::optional<shading::Placed> p = shading::place(
             m.lit, view_projection, camera, r.lighting, sampler, r.cull_objects, counts);
@@ -115,8 +115,8 @@ perspective::PipelineCounts draw_shadowed(const std::vector<normal_mapping::Mapp
 }
 
 // The second pass, into the frame.
-perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                const perspective::Camera& camera, const ShadowOptions& options,
-                                const ShadowMap& map, perspective::ColourTarget& frame);
+pipeline::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                const pipeline::Camera& camera, const ShadowOptions& options,
+                                const ShadowMap& map, pipeline::ColourTarget& frame);
 
 }  // namespace shadows

@@ -14,15 +14,15 @@ namespace {
 struct DepthProgram {
     rl::mat4 model_view_projection;  // the light's view-projection times the model matrix
     using Varyings = float;
-    perspective::ClipVertex<float> vertex(const perspective::MeshCorner& c) const {
-        return {perspective::clip_position(model_view_projection, c.position()), 0.0f};
+    pipeline::ClipVertex<float> vertex(const pipeline::MeshCorner& c) const {
+        return {pipeline::clip_position(model_view_projection, c.position()), 0.0f};
     }
 };
 // [/doc:depth-program]
 
 }  // namespace
 
-perspective::OverdrawError too_much_work(double cap, int size) {
+pipeline::OverdrawError too_much_work(double cap, int size) {
     char text[400];
     std::snprintf(text, sizeof text,
                   "the shadow map's pass: the triangles' bounding boxes, seen from the light, "
@@ -30,7 +30,7 @@ perspective::OverdrawError too_much_work(double cap, int size) {
                   "thousand layers, and never more than a thousand layers of a 2048x2048 one): "
                   "refusing to spend minutes on them (the same faces repeated, or long thin faces)",
                   cap, cap / (static_cast<double>(size) * size), size, size);
-    return perspective::OverdrawError(text);
+    return pipeline::OverdrawError(text);
 }
 
 void check_map_size(int size) {
@@ -40,8 +40,8 @@ void check_map_size(int size) {
                                     " texels (the cap: a map of 8192 x 8192 floats takes 256 MiB)");
 }
 
-perspective::PipelineOptions map_pipeline(const ShadowMapOptions& options) {
-    perspective::PipelineOptions pipeline;
+pipeline::PipelineOptions map_pipeline(const ShadowMapOptions& options) {
+    pipeline::PipelineOptions pipeline;
     pipeline.cull = options.cull;
     // At most a thousand layers of the map, and never more work than a
     // thousand layers of a 2048² map, whatever the map's size.
@@ -53,15 +53,15 @@ perspective::PipelineOptions map_pipeline(const ShadowMapOptions& options) {
 ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& models,
                             const LightView& light, const ShadowMapOptions& options) {
     check_map_size(options.size);
-    perspective::TargetOptions target_options;
+    pipeline::TargetOptions target_options;
     target_options.depth.constant_bias = options.constant_bias;
     target_options.depth.slope_bias = options.slope_bias;
-    perspective::RenderTarget<> target(options.size, options.size, target_options);
-    const perspective::PipelineOptions pipeline = map_pipeline(options);
+    pipeline::RenderTarget<> target(options.size, options.size, target_options);
+    const pipeline::PipelineOptions pipeline = map_pipeline(options);
     const double texels = static_cast<double>(options.size) * options.size;
     const auto pass = [&](const normal_mapping::MappedModel& m) {
-        const perspective::TexturedModel& model = m.lit.model;
-        return std::pair(perspective::MeshView(model.mesh, model.transform),
+        const pipeline::TexturedModel& model = m.lit.model;
+        return std::pair(pipeline::MeshView(model.mesh, model.transform),
                          DepthProgram{light.view_projection * model.transform});
     };
     // Every model's work counted by the pipeline's set-up alone, before any
@@ -70,13 +70,13 @@ ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& mode
     for (const normal_mapping::MappedModel& m : models) {
         const auto [mesh, program] = pass(m);
         const double cap = pipeline.max_overdraw * texels;
-        if (perspective::samples_to_visit(mesh, program, options.size, options.size, 1, pipeline) >
+        if (pipeline::samples_to_visit(mesh, program, options.size, options.size, 1, pipeline) >
             cap)
             throw too_much_work(cap, options.size);
     }
     for (const normal_mapping::MappedModel& m : models) {
         const auto [mesh, program] = pass(m);
-        perspective::draw(mesh, program, target, pipeline);
+        pipeline::draw(mesh, program, target, pipeline);
     }
     return {light, std::move(*target.depth())};
 }

@@ -32,7 +32,7 @@ struct ShadowMapOptions {
     int size = 2048;
     float constant_bias = 0;                     // added to every stored depth (window depth, 0..1)
     float slope_bias = 1;                        // times the triangle's depth change per texel
-    perspective::Cull cull = perspective::Cull::back;  // front: store the faces turned away
+    pipeline::Cull cull = pipeline::Cull::back;  // front: store the faces turned away
     double max_samples = kMaxShadowPassSamples;  // the pass's cap (a test lowers it)
 };
 
@@ -46,9 +46,9 @@ struct ShadowMap {
 void check_map_size(int size);
 // The pipeline options of the map's pass: its cull, and its overdraw cap
 // (options.max_samples texel visits, per model).
-perspective::PipelineOptions map_pipeline(const ShadowMapOptions& options);
+pipeline::PipelineOptions map_pipeline(const ShadowMapOptions& options);
 // The refusal of a model whose faces' boxes cover more than `cap` texels of a size² map.
-perspective::OverdrawError too_much_work(double cap, int size);
+pipeline::OverdrawError too_much_work(double cap, int size);
 
 // Throws std::invalid_argument for a size outside 1..kMaxShadowMapSize.
 ShadowMap render_shadow_map(const std::vector<normal_mapping::MappedModel>& models,

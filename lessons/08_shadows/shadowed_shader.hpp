@@ -36,7 +36,7 @@ struct ShadowedShader {
     shading::Lighting<float> rest;  // the other lights and the ambient term
     using Varyings = normal_mapping::NormalMappedShader::Varyings;
 
-    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return surface.vertex(in);
     }
 
@@ -46,7 +46,7 @@ struct ShadowedShader {
         return visibility(map, v.position, rl::normalize(v.normal), lookup);
     }
 
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         const rl::vec3 n = surface.normal_at(f, dx, dy);

@@ -8,7 +8,7 @@
 //
 //   const environment::EnvironmentShader shader{mapped, {.environment = &env},
 //                                               {.material = environment::Material::glass}};
-//   perspective::draw(surface, shader, hdr_target, {});
+//   pipeline::draw(surface, shader, hdr_target, {});
 #pragma once
 
 #include <numbers>
@@ -72,12 +72,12 @@ struct EnvironmentShader {
     SurfaceMaterial material;
     using Varyings = normal_mapping::NormalMappedShader::Varyings;
 
-    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return surface.vertex(in);
     }
 
     // [doc:environment-shader]
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         const Varyings& v = f.varyings;
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         const rl::vec3 n = surface.normal_at(f, dx, dy);
@@ -103,7 +103,7 @@ struct EnvironmentShader {
 
     // Each pixel's Monte Carlo rays are its own (seeded by its place), so
     // the noise stays put when nothing moves.
-    static std::uint32_t seed(const perspective::Fragment<Varyings>& f) {
+    static std::uint32_t seed(const pipeline::Fragment<Varyings>& f) {
         return static_cast<std::uint32_t>(f.x) * 73856093u ^
                static_cast<std::uint32_t>(f.y) * 19349663u;
     }
@@ -113,7 +113,7 @@ struct EnvironmentShader {
     // from this pixel to the next (from the screen derivatives of the
     // position and the interpolated normal; the normal map's own bumps
     // within a pixel are not counted), in texels of the map.
-    float mirror_level(const perspective::Fragment<Varyings>& f) const {
+    float mirror_level(const pipeline::Fragment<Varyings>& f) const {
         if (light.environment->filter() != MapFilter::trilinear) return 0;  // no level to pick
         const Varyings& v = f.varyings;
         const auto mirrored = [&](rl::vec3 position, rl::vec3 normal) {
@@ -147,7 +147,7 @@ struct EnvironmentShader {
     // [doc:glossy-shader]
     // Cook-Torrance's reflection of the environment, plus (for a plastic)
     // the albedo's diffuse light under it: what the specular layer lets through.
-    rl::vec3 glossy(const perspective::Fragment<Varyings>& f, rl::vec3 n, rl::vec3 to_eye, rl::vec3 r,
+    rl::vec3 glossy(const pipeline::Fragment<Varyings>& f, rl::vec3 n, rl::vec3 to_eye, rl::vec3 r,
                     rl::vec3 f0, rl::vec3 albedo) const {
         // A broken model's zero or NaN normal: the surface faces the eye.
         if (!(rl::dot(n, n) > 0.5f)) n = to_eye, r = to_eye;

@@ -20,12 +20,12 @@ int main(int argc, char** argv) {
         "Lesson 09, environment: mirrors, glass, rough metal and plastic lit by a sky, a studio or "
         "an .hdr file, as a cube or a lat-long map, with the sky behind them, tone mapped."};
     rl::ImageOptions image_options{"09_environment.tga"};
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     environment::EnvironmentOptions env_options;
     environment::RenderOptions options;
     environment::Exposure exposure;
     normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
-    perspective::add_view_options(app, view, "the globe and the torus from obj/");
+    pipeline::add_view_options(app, view, "the globe and the torus from obj/");
     app.remove_option(app.get_option("--light"));  // the environment is the light here
     rl::add_image_options(app, image_options);
     app.add_option(
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
             normal_mapping::build_mip_levels(models);
         const auto drawing = std::chrono::steady_clock::now();
         environment::LightTarget frame = environment::light_target(width, height);
-        const perspective::PipelineCounts counts =
+        const pipeline::PipelineCounts counts =
             environment::render(models, camera, light, options, frame);
         const rl::Image picture = environment::tone_mapped(frame.colour(), exposure);
         const auto done = std::chrono::steady_clock::now();

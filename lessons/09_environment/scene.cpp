@@ -24,10 +24,10 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
     return models;
 }
 
-perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
-    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+pipeline::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const pipeline::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings) {
-    perspective::ViewOptions framed = view;
+    pipeline::ViewOptions framed = view;
     if (view.models.empty()) {  // the default scene's view, unless the options give one
         if (view.eye.empty()) framed.eye = {0.3f, 0.35f, 3.8f};
         if (view.target.empty()) framed.target = {0, 0, 0};
@@ -35,7 +35,7 @@ perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
     return normal_mapping::load_view(framed, tangents, width, height, warnings, default_scene);
 }
 
-PixelRays::PixelRays(const perspective::Camera& camera, int width, int height)
+PixelRays::PixelRays(const pipeline::Camera& camera, int width, int height)
     : width_(static_cast<float>(width)), height_(static_cast<float>(height)) {
     // The screen one unit in front of the eye spans tan(fov / 2) up and
     // down, times the aspect ratio across.
@@ -51,7 +51,7 @@ rl::vec3 PixelRays::ray(float x, float y) const {
 }
 
 // [doc:skybox]
-void draw_skybox(const Environment& environment, const perspective::Camera& camera,
+void draw_skybox(const Environment& environment, const pipeline::Camera& camera,
                  LightTarget& frame) {
     const rl::FloatImage* depth = frame.depth();
     const float clear = frame.depth_state.clear;
@@ -151,8 +151,8 @@ EnvironmentLight PreparedLight::light() const {
     return {environment_, diffuse_ ? &*diffuse_ : nullptr, glossy_ ? &*glossy_ : nullptr};
 }
 
-perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                const perspective::Camera& camera, const PreparedLight& light,
+pipeline::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                const pipeline::Camera& camera, const PreparedLight& light,
                                 const RenderOptions& options, LightTarget& frame) {
     bool monte_carlo = false;
     for (std::size_t i = 0; i < models.size(); ++i) {
@@ -170,20 +170,20 @@ perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel
                                     std::to_string(kMaxMonteCarloRays) +
                                     " a frame may take: fewer samples or a smaller image");
     const float aspect = static_cast<float>(frame.width()) / static_cast<float>(frame.height());
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    const rl::mat4 view_projection = pipeline::view_projection(camera, aspect);
     normal_mapping::RenderOptions surfaces;
     surfaces.normal_map = options.normal_map;
     surfaces.filter = options.map_filter;
     textures::SamplerState sampler;  // the albedo's: sRGB bytes decoded to linear light
     sampler.filter = options.map_filter;
     sampler.encoding = &shading::srgb_texels();
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
     for (std::size_t i = 0; i < models.size(); ++i) {
         const normal_mapping::MappedModel& m = models[i];
         const std::optional<shading::Placed> p = shading::place(
             m.lit, view_projection, camera, surfaces.lighting, sampler, true, counts);
         if (!p) continue;
-        counts += perspective::draw(p->surface,
+        counts += pipeline::draw(p->surface,
                                  EnvironmentShader{normal_mapping::shader_for(m, *p, surfaces),
                                                    light.light(), material_of(options, i)},
                                  frame, options.pipeline);
@@ -192,8 +192,8 @@ perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel
     return counts;
 }
 
-perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                const perspective::Camera& camera, const Environment& environment,
+pipeline::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                const pipeline::Camera& camera, const Environment& environment,
                                 const RenderOptions& options, LightTarget& frame) {
     return render(models, camera, PreparedLight(environment, options, models.size()), options,
                   frame);

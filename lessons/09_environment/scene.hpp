@@ -15,7 +15,7 @@ namespace environment {
 
 // The frame of this lesson: linear light in floats (black where nothing is
 // drawn), and depth.
-using LightTarget = perspective::RenderTarget<rl::vec3>;
+using LightTarget = pipeline::RenderTarget<rl::vec3>;
 inline LightTarget light_target(int width, int height) {
     return LightTarget(width, height, {}, rl::vec3{0, 0, 0});
 }
@@ -26,8 +26,8 @@ std::vector<normal_mapping::MappedModel> default_scene(std::vector<std::string>&
 // The default scene (or the view's models, as stored) and its camera; for
 // the default scene without --eye, a view from just above the horizon, so
 // that the sky, the ground and their reflections all show.
-perspective::ViewedScene<normal_mapping::MappedModel> load_scene(
-    const perspective::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
+pipeline::ViewedScene<normal_mapping::MappedModel> load_scene(
+    const pipeline::ViewOptions& view, normal_mapping::TangentMethod tangents, int width,
     int height, std::vector<std::string>& warnings);
 
 struct RenderOptions {
@@ -51,7 +51,7 @@ struct RenderOptions {
     normal_mapping::NormalMap normal_map = normal_mapping::NormalMap::tangent;
     textures::Filter map_filter = textures::Filter::trilinear;  // the normal maps'
     bool skybox = true;
-    perspective::PipelineOptions pipeline;
+    pipeline::PipelineOptions pipeline;
 };
 
 // Model `index`'s material under `options`.
@@ -79,7 +79,7 @@ void refuse_unused_options(const RenderOptions& options, const EnvironmentOption
 // the camera's projection does to a point.
 class PixelRays {
   public:
-    PixelRays(const perspective::Camera& camera, int width, int height);
+    PixelRays(const pipeline::Camera& camera, int width, int height);
     rl::vec3 ray(float x, float y) const;
 
   private:
@@ -87,7 +87,7 @@ class PixelRays {
     float width_, height_;
 };
 
-inline rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int height, float x, float y) {
+inline rl::vec3 pixel_ray(const pipeline::Camera& camera, int width, int height, float x, float y) {
     return PixelRays(camera, width, height).ray(x, y);
 }
 
@@ -95,7 +95,7 @@ inline rl::vec3 pixel_ray(const perspective::Camera& camera, int width, int heig
 // (its depth still the clear value) gets the environment's radiance along
 // the ray through its centre. Drawn after the models, so each pixel is
 // looked up once, never for a pixel a model covers.
-void draw_skybox(const Environment& environment, const perspective::Camera& camera,
+void draw_skybox(const Environment& environment, const pipeline::Camera& camera,
                  LightTarget& frame);
 
 // The light the materials of `options` need for `model_count` models,
@@ -125,12 +125,12 @@ inline constexpr long long kMaxMonteCarloRays = 1LL << 30;
 // The models, then (if options.skybox) the sky. Throws
 // std::invalid_argument, before drawing, when a material uses Monte Carlo
 // and the frame's pixels times options.samples exceed kMaxMonteCarloRays.
-perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                const perspective::Camera& camera, const PreparedLight& light,
+pipeline::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                const pipeline::Camera& camera, const PreparedLight& light,
                                 const RenderOptions& options, LightTarget& frame);
 // The same, preparing the light first.
-perspective::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
-                                const perspective::Camera& camera, const Environment& environment,
+pipeline::PipelineCounts render(const std::vector<normal_mapping::MappedModel>& models,
+                                const pipeline::Camera& camera, const Environment& environment,
                                 const RenderOptions& options, LightTarget& frame);
 
 }  // namespace environment

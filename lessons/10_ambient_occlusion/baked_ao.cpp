@@ -17,11 +17,11 @@ struct BakedShader {
     const std::vector<float>& corners;
     using Varyings = float;
 
-    perspective::ClipVertex<float> vertex(const shading::SurfaceCorner& c) const {
+    pipeline::ClipVertex<float> vertex(const shading::SurfaceCorner& c) const {
         return {lit.vertex(c).position,
                 corners[3 * static_cast<std::size_t>(c.face) + static_cast<std::size_t>(c.corner)]};
     }
-    float fragment(const perspective::Fragment<float>& f) const { return f.varyings; }
+    float fragment(const pipeline::Fragment<float>& f) const { return f.varyings; }
 };
 
 }  // namespace
@@ -67,17 +67,17 @@ BakedAo bake_vertex_ao(const std::vector<normal_mapping::MappedModel>& models,
 // [/doc:bake]
 
 rl::FloatImage draw_baked(const std::vector<normal_mapping::MappedModel>& models,
-                          const perspective::Camera& camera, const shadows::ShadowOptions& options,
+                          const pipeline::Camera& camera, const shadows::ShadowOptions& options,
                           const shadows::ShadowMap& map, const BakedAo& baked, int width,
                           int height) {
-    perspective::RenderTarget<float> target(width, height, {}, 1.0f);
+    pipeline::RenderTarget<float> target(width, height, {}, 1.0f);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     shadows::draw_shadowed(
         models, camera, aspect, options, map,
         [&](const normal_mapping::MappedModel& m, const shading::Surface& surface,
             const shadows::ShadowedShader& shader) {
             const auto i = static_cast<std::size_t>(&m - models.data());
-            return perspective::draw(surface, BakedShader{shader, baked.corners.at(i)}, target,
+            return pipeline::draw(surface, BakedShader{shader, baked.corners.at(i)}, target,
                                   options.render.pipeline);
         });
     return std::move(target.colour<0>());

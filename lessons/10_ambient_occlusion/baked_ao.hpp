@@ -36,7 +36,7 @@ BakedAo bake_vertex_ao(const std::vector<normal_mapping::MappedModel>& models,
 // The baked values interpolated to every pixel, drawn with the G-buffer's
 // camera and pipeline (so the same pixels are covered); 1 where no model is.
 rl::FloatImage draw_baked(const std::vector<normal_mapping::MappedModel>& models,
-                          const perspective::Camera& camera, const shadows::ShadowOptions& options,
+                          const pipeline::Camera& camera, const shadows::ShadowOptions& options,
                           const shadows::ShadowMap& map, const BakedAo& baked, int width,
                           int height);
 

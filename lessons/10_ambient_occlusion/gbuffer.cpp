@@ -5,25 +5,25 @@
 namespace occlusion {
 
 GBuffer render_gbuffer(const std::vector<normal_mapping::MappedModel>& models,
-                       const perspective::Camera& camera, const shadows::ShadowOptions& options,
+                       const pipeline::Camera& camera, const shadows::ShadowOptions& options,
                        const shadows::ShadowMap& map, int width, int height,
-                       perspective::PipelineCounts* counts) {
+                       pipeline::PipelineCounts* counts) {
     GBuffer g(width, height, {}, rl::vec3{0, 0, 0}, rl::vec3{0, 0, 0}, rl::vec3{0, 0, 0});
     shadows::ShadowOptions direct = options;
     direct.render.lighting.ambient = {0, 0, 0};  // added later, under the occlusion
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    const perspective::PipelineCounts drawn = shadows::draw_shadowed(
+    const pipeline::PipelineCounts drawn = shadows::draw_shadowed(
         models, camera, aspect, direct, map,
         [&](const normal_mapping::MappedModel&, const shading::Surface& surface,
             const shadows::ShadowedShader& shader) {
-            return perspective::draw(surface, GBufferShader{shader}, g, direct.render.pipeline);
+            return pipeline::draw(surface, GBufferShader{shader}, g, direct.render.pipeline);
         });
     if (counts) *counts = drawn;
     return g;
 }
 
-Screen::Screen(const perspective::Camera& camera, int width, int height)
-    : view_projection_(perspective::view_projection(
+Screen::Screen(const pipeline::Camera& camera, int width, int height)
+    : view_projection_(pipeline::view_projection(
           camera, static_cast<float>(width) / static_cast<float>(height))),
       rays_(camera, width, height),
       eye_(camera.eye),

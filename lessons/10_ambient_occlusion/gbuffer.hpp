@@ -21,7 +21,7 @@ namespace occlusion {
 
 // Three colour attachments and depth: direct light (linear, HDR), albedo
 // (linear) and the unit world normal; 0 where no model is.
-using GBuffer = perspective::RenderTarget<rl::vec3, rl::vec3, rl::vec3>;
+using GBuffer = pipeline::RenderTarget<rl::vec3, rl::vec3, rl::vec3>;
 inline constexpr std::size_t kDirect = 0, kAlbedo = 1, kNormal = 2;
 
 // [doc:gbuffer-shader]
@@ -31,10 +31,10 @@ struct GBufferShader {
     shadows::ShadowedShader lit;
     using Varyings = shadows::ShadowedShader::Varyings;
 
-    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return lit.vertex(in);
     }
-    std::tuple<rl::vec3, rl::vec3, rl::vec3> fragment(const perspective::Fragment<Varyings>& f) const {
+    std::tuple<rl::vec3, rl::vec3, rl::vec3> fragment(const pipeline::Fragment<Varyings>& f) const {
         const rl::vec2 dx = f.d_dx(&Varyings::uv), dy = f.d_dy(&Varyings::uv);
         return {lit.fragment(f), lit.surface.u.albedo(f.varyings.uv, dx, dy),
                 rl::normalize(f.varyings.normal)};
@@ -45,16 +45,16 @@ struct GBufferShader {
 // The G-buffer of the scene from `camera`: lesson 08's second pass with
 // its ambient term set to 0 (options.render.lighting.ambient is ignored).
 GBuffer render_gbuffer(const std::vector<normal_mapping::MappedModel>& models,
-                       const perspective::Camera& camera, const shadows::ShadowOptions& options,
+                       const pipeline::Camera& camera, const shadows::ShadowOptions& options,
                        const shadows::ShadowMap& map, int width, int height,
-                       perspective::PipelineCounts* counts = nullptr);
+                       pipeline::PipelineCounts* counts = nullptr);
 
 // Between the screen and the world for one camera and image size: a
 // pixel's surface point from the depth buffer, and where a world point
 // lands on the screen.
 class Screen {
   public:
-    Screen(const perspective::Camera& camera, int width, int height);
+    Screen(const pipeline::Camera& camera, int width, int height);
 
     int width() const { return width_; }
     int height() const { return height_; }

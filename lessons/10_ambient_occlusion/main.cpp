@@ -16,12 +16,12 @@ int main(int argc, char** argv) {
         "Lesson 10, ambient occlusion: lesson 08's scene into a G-buffer, then screen-space "
         "ambient occlusion darkening the ambient light."};
     rl::ImageOptions image_options{"10_ambient_occlusion.tga"};
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     occlusion::SceneOptions options;
     normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
     occlusion::Show show = occlusion::Show::image;
     view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
-    perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
+    pipeline::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::Option* ao_option = rl::add_method_option(
         app, "--ao", options.ao.method, occlusion::kAoMethods, "How the occlusion is found");

@@ -36,7 +36,7 @@ RayTracedAo::RayTracedAo(const std::vector<normal_mapping::MappedModel>& models)
                     to_world * m.lit.normals[3 * f + static_cast<std::size_t>(k)])));
             }
     }
-    const perspective::Box box = normal_mapping::scene_box(models);
+    const pipeline::Box box = normal_mapping::scene_box(models);
     if (!box.empty())
         s.offset = 1e-6 * std::max(1.0, static_cast<double>(rl::length(box.max - box.min)));
     s.device = rtcNewDevice(nullptr);

@@ -52,13 +52,13 @@ void refuse_unused_options(const AoOptions& ao, bool environment, Show show,
                        : shown + " shows no light");
 }
 
-Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const pipeline::Camera& camera,
              const SceneOptions& options, int width, int height, const BakedAo* baked) {
     check(options.ao);
     check_frame_size(width, height);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, aspect, options.shadow);
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
     GBuffer g = render_gbuffer(models, camera, options.shadow, map, width, height, &counts);
     if (options.ao.method != AoMethod::baked) {
         rl::FloatImage ao = ambient_occlusion(g, Screen(camera, width, height), options.ao);

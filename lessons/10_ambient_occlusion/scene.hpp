@@ -72,7 +72,7 @@ struct SceneOptions {
 struct Frame {
     GBuffer g;
     rl::FloatImage ao;
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
 };
 
 // A frame holds about 80 bytes a pixel (the G-buffer's three float colours
@@ -103,7 +103,7 @@ void refuse_unused_options(const AoOptions& ao, bool environment, Show show,
 // Both passes and the occlusion, for `camera` at width x height. The baked
 // method reads `baked` (bake_vertex_ao with the same radius), or bakes
 // here, within the frame, when given none.
-Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const pipeline::Camera& camera,
              const SceneOptions& options, int width, int height, const BakedAo* baked = nullptr);
 
 // [doc:compose]

@@ -6,8 +6,8 @@
 // the pixel's centre. Derivations and pictures: docs/11_antialiasing.md.
 //
 //   const std::vector<rl::vec2> four = antialiasing::sample_offsets(Pattern::grid, 4);
-//   perspective::RenderTarget<rl::vec3> frame(800, 600, {.samples = 4}, background);
-//   perspective::draw(geometry, program, frame, {}, antialiasing::Multisampling{four});
+//   pipeline::RenderTarget<rl::vec3> frame(800, 600, {.samples = 4}, background);
+//   pipeline::draw(geometry, program, frame, {}, antialiasing::Multisampling{four});
 //   const rl::Grid<rl::vec3> light = antialiasing::resolve(frame.colour(), four, Resolve::box);
 #pragma once
 
@@ -35,17 +35,17 @@ struct Sampling {
     float bias;
 };
 template <class T, class... Pixels>
-Sampling start_sampling(const T& t, const perspective::RenderTarget<Pixels...>& target,
-                        std::size_t offsets, const perspective::PipelineOptions& options,
-                        perspective::PipelineCounts& counts) {
+Sampling start_sampling(const T& t, const pipeline::RenderTarget<Pixels...>& target,
+                        std::size_t offsets, const pipeline::PipelineOptions& options,
+                        pipeline::PipelineCounts& counts) {
     const int n = target.samples();
     if (n != static_cast<int>(offsets))
         throw std::invalid_argument("a pattern of " + std::to_string(offsets) +
                                     " samples a pixel needs a target of as many, not " +
                                     std::to_string(n));
     const triangles::PixelRect rect = options.tile.value_or(target.bounds());
-    counts.visited += static_cast<std::size_t>(n) * perspective::box_samples(t.screen(), rect);
-    return {n, rect, perspective::depth_bias(t, target.depth_state)};
+    counts.visited += static_cast<std::size_t>(n) * pipeline::box_samples(t.screen(), rect);
+    return {n, rect, pipeline::depth_bias(t, target.depth_state)};
 }
 
 // [doc:supersampling]
@@ -57,9 +57,9 @@ struct Supersampling {
     std::vector<rl::vec2> offsets;
 
     template <class P, class T, class... Pixels>
-    bool operator()(const T& t, const P& program, perspective::RenderTarget<Pixels...>& target,
-                    const perspective::PipelineOptions& options,
-                    perspective::PipelineCounts& counts) const {
+    bool operator()(const T& t, const P& program, pipeline::RenderTarget<Pixels...>& target,
+                    const pipeline::PipelineOptions& options,
+                    pipeline::PipelineCounts& counts) const {
         const Sampling sampling = start_sampling(t, target, offsets.size(), options, counts);
         const int n = sampling.n;
         const float bias = sampling.bias;
@@ -68,8 +68,8 @@ struct Supersampling {
             ok &=
                 triangles::rasterize(options.raster, t.screen(offsets[static_cast<std::size_t>(s)]),
                                      sampling.rect, [&](int x, int y, rl::vec3 b) {
-                                         const float z = perspective::window_depth(t, b, bias);
-                                         perspective::fragment_operations(program, t, x, y, z, b,
+                                         const float z = pipeline::window_depth(t, b, bias);
+                                         pipeline::fragment_operations(program, t, x, y, z, b,
                                                                        target, n * x + s, counts);
                                      });
         return ok;
@@ -141,14 +141,14 @@ struct PixelSamples {
 };
 template <class T, class... Pixels>
 PixelSamples test_samples(const T& t, const SampleEdges& edges, const Sampling& sampling,
-                          const perspective::RenderTarget<Pixels...>& target, int x, int y) {
+                          const pipeline::RenderTarget<Pixels...>& target, int x, int y) {
     PixelSamples p;
     for (int s = 0; s < sampling.n; ++s) {
         const std::optional<rl::vec3> b = edges.sample[s].covered(x, y);
         if (!b) continue;
         p.covered |= SampleMask{1} << s;
-        p.depth[s] = perspective::window_depth(t, *b, sampling.bias);
-        if (perspective::sample_passes(target, sampling.n * x + s, y, p.depth[s]))
+        p.depth[s] = pipeline::window_depth(t, *b, sampling.bias);
+        if (pipeline::sample_passes(target, sampling.n * x + s, y, p.depth[s]))
             p.passed |= SampleMask{1} << s;
     }
     return p;
@@ -166,9 +166,9 @@ struct Multisampling {
     ShadeAt at = ShadeAt::centre;
 
     template <class P, class T, class... Pixels>
-    bool operator()(const T& t, const P& program, perspective::RenderTarget<Pixels...>& target,
-                    const perspective::PipelineOptions& options,
-                    perspective::PipelineCounts& counts) const {
+    bool operator()(const T& t, const P& program, pipeline::RenderTarget<Pixels...>& target,
+                    const pipeline::PipelineOptions& options,
+                    pipeline::PipelineCounts& counts) const {
         const Sampling sampling = start_sampling(t, target, offsets.size(), options, counts);
         const SampleEdges edges = sample_edges(t, offsets, options.raster);
         const triangles::PixelRect box = box_within(t.screen(), sampling.rect);
@@ -184,13 +184,13 @@ struct Multisampling {
                                                           {static_cast<float>(x) + 0.5f + where.x,
                                                            static_cast<float>(y) + 0.5f + where.y},
                                                           area2);
-                const float z = perspective::window_depth(t, b, sampling.bias);
+                const float z = pipeline::window_depth(t, b, sampling.bias);
                 const auto out =
-                    perspective::shade(program, perspective::fragment_at(t, x, y, z, b), target, counts);
+                    pipeline::shade(program, pipeline::fragment_at(t, x, y, z, b), target, counts);
                 if (!out) continue;
                 for (int s = 0; s < sampling.n; ++s)
                     if (samples.passed & (SampleMask{1} << s)) {
-                        perspective::write_sample(target, sampling.n * x + s, y, samples.depth[s],
+                        pipeline::write_sample(target, sampling.n * x + s, y, samples.depth[s],
                                                *out);
                         ++counts.stored;
                     }

@@ -15,12 +15,12 @@ int main(int argc, char** argv) {
         "Lesson 11, antialiasing: lesson 08's scene with several samples a pixel, supersampled or "
         "multisampled, resolved in linear light."};
     rl::ImageOptions image_options{"11_antialiasing.tga"};
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     shadows::ShadowOptions shadow;
     antialiasing::AaOptions options;
     normal_mapping::TangentMethod tangents = normal_mapping::TangentMethod::split;
     view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
-    perspective::add_view_options(app, view, "floor, globe, crate and torus from obj/");
+    pipeline::add_view_options(app, view, "floor, globe, crate and torus from obj/");
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--aa", options.method, antialiasing::kMethods,
                           "How a pixel is sampled: once, supersampled, multisampled, or once and "
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
         std::vector<std::string> warnings;
         const auto [models, framed] =
             antialiasing::load_scene(view, tangents, width, height, warnings);
-        const perspective::Camera camera = antialiasing::orbit(framed, orbit_degrees);
+        const pipeline::Camera camera = antialiasing::orbit(framed, orbit_degrees);
         rl::print_warnings("11_antialiasing", warnings);
         if (shadow.render.filter == textures::Filter::trilinear)
             normal_mapping::build_mip_levels(models);

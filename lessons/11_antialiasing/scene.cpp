@@ -63,9 +63,9 @@ std::vector<rl::vec2> offsets_of(const AaOptions& options) {
 }
 
 SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models,
-                          const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                          const pipeline::Camera& camera, const shadows::ShadowOptions& shadow,
                           Method method, const std::vector<rl::vec2>& offsets, ShadeAt shade_at,
-                          int width, int height, perspective::PipelineCounts* counts) {
+                          int width, int height, pipeline::PipelineCounts* counts) {
     const int n = static_cast<int>(offsets.size());
     check_frame_size(width, height, n);
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
@@ -76,26 +76,26 @@ SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models
     };
     const rl::vec3 background{linear(rl::kBackground.r), linear(rl::kBackground.g),
                               linear(rl::kBackground.b)};
-    perspective::TargetOptions samples;
+    pipeline::TargetOptions samples;
     samples.samples = n;
     SampleTarget target(width, height, samples, background);
     const Supersampling ssaa{offsets};
     const Multisampling msaa{offsets, shade_at};
-    const perspective::PipelineOptions& pipeline = shadow.render.pipeline;
-    const perspective::PipelineCounts drawn = shadows::draw_shadowed(
+    const pipeline::PipelineOptions& pipeline = shadow.render.pipeline;
+    const pipeline::PipelineCounts drawn = shadows::draw_shadowed(
         models, camera, aspect, shadow, map,
         [&](const normal_mapping::MappedModel&, const shading::Surface& surface,
             const shadows::ShadowedShader& shader) {
             switch (method) {
                 case Method::ssaa:
-                    return perspective::draw(surface, shader, target, pipeline, ssaa);
+                    return pipeline::draw(surface, shader, target, pipeline, ssaa);
                 case Method::msaa:
-                    return perspective::draw(surface, shader, target, pipeline, msaa);
+                    return pipeline::draw(surface, shader, target, pipeline, msaa);
                 case Method::none:
                 case Method::post:
                     break;
             }
-            return perspective::draw(surface, shader, target, pipeline);
+            return pipeline::draw(surface, shader, target, pipeline);
         });
     if (counts) *counts = drawn;
     return target;
@@ -142,7 +142,7 @@ rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
 }
 // [/doc:tone-order]
 
-perspective::Camera orbit(perspective::Camera c, double degrees) {
+pipeline::Camera orbit(pipeline::Camera c, double degrees) {
     const double a = degrees * 3.14159265358979 / 180;
     const rl::vec3 d = c.eye - c.target;
     const float cs = static_cast<float>(std::cos(a)), sn = static_cast<float>(std::sin(a));
@@ -150,7 +150,7 @@ perspective::Camera orbit(perspective::Camera c, double degrees) {
     return c;
 }
 
-Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const pipeline::Camera& camera,
              const shadows::ShadowOptions& shadow, const AaOptions& options, int width,
              int height) {
     check(options);

@@ -83,21 +83,21 @@ struct Frame {
     rl::Grid<rl::vec3>
         light;          // resolved, exposed and tone-mapped if asked: linear, 0 to 1 as shown
     rl::Image picture;  // the light in sRGB bytes
-    perspective::PipelineCounts counts;
+    pipeline::PipelineCounts counts;
 };
 
 // Lesson 08's two passes, the second through the options' coverage policy,
 // then the resolve.
-Frame render(const std::vector<normal_mapping::MappedModel>& models, const perspective::Camera& camera,
+Frame render(const std::vector<normal_mapping::MappedModel>& models, const pipeline::Camera& camera,
              const shadows::ShadowOptions& shadow, const AaOptions& options, int width, int height);
 
 // What render() draws before its resolve: every sample of the frame, for
 // explicit offsets (the lab's truth draws 256 a pixel as 16 frames of 16).
-using SampleTarget = perspective::RenderTarget<rl::vec3>;
+using SampleTarget = pipeline::RenderTarget<rl::vec3>;
 SampleTarget draw_samples(const std::vector<normal_mapping::MappedModel>& models,
-                          const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                          const pipeline::Camera& camera, const shadows::ShadowOptions& shadow,
                           Method method, const std::vector<rl::vec2>& offsets, ShadeAt shade_at,
-                          int width, int height, perspective::PipelineCounts* counts = nullptr);
+                          int width, int height, pipeline::PipelineCounts* counts = nullptr);
 
 // The offsets the options ask for: {0, 0} for none and post.
 std::vector<rl::vec2> offsets_of(const AaOptions& options);
@@ -109,7 +109,7 @@ rl::Grid<rl::vec3> shown_light(const rl::Grid<rl::vec3>& samples,
 
 // The camera turned about the vertical through its target by `degrees`
 // (a frame of a slow orbit: the lab's motion, the page's crawling edges).
-perspective::Camera orbit(perspective::Camera camera, double degrees);
+pipeline::Camera orbit(pipeline::Camera camera, double degrees);
 
 using shadows::load_scene;  // lesson 08's scene and camera
 

@@ -48,7 +48,7 @@ bool fast_triangle(const Setup& t, std::uint32_t model, int width, int height, F
     for (int i = 0; i < 3; ++i) {
         o.z[i] = t.window[i].z;
         o.inverse_w[i] = t.inverse_w[i];
-        const auto& lanes = std::bit_cast<perspective::Lanes<Varyings>>(t.over_w[i]);
+        const auto& lanes = std::bit_cast<pipeline::Lanes<Varyings>>(t.over_w[i]);
         std::copy(lanes.begin(), lanes.end(), o.over_w[i]);
     }
     o.z_min = std::min({o.z[0], o.z[1], o.z[2]});

@@ -21,7 +21,7 @@ namespace fast {
 
 using Varyings = normal_mapping::NormalMappedShader::Varyings;
 inline constexpr int kVaryingFloats = sizeof(Varyings) / sizeof(float);  // 12
-using Setup = perspective::TriangleSetup<Varyings>;
+using Setup = pipeline::TriangleSetup<Varyings>;
 
 struct FastTriangle {
     // Edge k (opposite vertex k) as lesson 02 evaluates it at a pixel centre

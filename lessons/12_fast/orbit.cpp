@@ -8,11 +8,11 @@
 
 namespace fast {
 
-perspective::Camera orbit(const perspective::Camera& camera, int frame, int frames) {
+pipeline::Camera orbit(const pipeline::Camera& camera, int frame, int frames) {
     if (frame >= frames - 1) return camera;  // the last frame: exactly the camera given
     const float degrees = 360.0f * static_cast<float>(frame + 1) / static_cast<float>(frames);
     const rl::mat3 turn = rl::to_matrix(rl::axis_angle(camera.up, degrees));
-    perspective::Camera out = camera;
+    pipeline::Camera out = camera;
     out.eye = camera.target + turn * (camera.eye - camera.target);
     return out;
 }

@@ -12,7 +12,7 @@
 
 namespace fast {
 
-perspective::Camera orbit(const perspective::Camera& camera, int frame, int frames);
+pipeline::Camera orbit(const pipeline::Camera& camera, int frame, int frames);
 
 // The most pixels a run of frames may draw in all, frames x width x height:
 // 2^32, 256 frames at 4096² or 16 at 16384² (1000 frames at 16384² asked

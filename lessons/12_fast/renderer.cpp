@@ -112,16 +112,16 @@ struct Renderer::Impl {
     std::vector<Material> materials;
     const shadows::ShadowMap* shadow_map = nullptr;  // set_shadow_map()'s, for every material
     shadows::ShadowLookup shadow_lookup;
-    std::vector<std::vector<perspective::ClipVertex<Varyings>>> clip;  // per model, per vertex
+    std::vector<std::vector<pipeline::ClipVertex<Varyings>>> clip;  // per model, per vertex
     std::vector<char> drawn;                                        // per model, this frame
-    std::vector<perspective::MeshView> views;  // per model: lesson 05's view, its corner order
+    std::vector<pipeline::MeshView> views;  // per model: lesson 05's view, its corner order
     // The faces in pieces of at most kPieceFaces, each set up by one thread
     // into its own triangles; `triangles` reads them as one array, in order.
     // The pieces depend on the models only, never on the thread count.
     struct Piece {
         std::size_t model, first_face, faces;
         std::vector<FastTriangle> triangles;
-        perspective::PipelineCounts counts;  // culled, clipped, outside, refused
+        pipeline::PipelineCounts counts;  // culled, clipped, outside, refused
         double visited = 0;               // pixels in the triangles' boxes (the overdraw cap)
     };
     std::vector<Piece> pieces;
@@ -158,7 +158,7 @@ struct Renderer::Impl {
                                          "fast path (their size is the cause, not the image's)");
             }
             placed.push_back(std::nullopt);
-            views.push_back(perspective::MeshView(m.lit.model.mesh, m.lit.model.transform));
+            views.push_back(pipeline::MeshView(m.lit.model.mesh, m.lit.model.transform));
             clip.emplace_back(o.vertex_cache ? models.back().representative.size()
                                              : models.back().indices.size());
             if (o.depth_only) {  // nothing is shaded: no surface, no material
@@ -200,11 +200,11 @@ struct Renderer::Impl {
     }
 
     // The frame's four steps (Renderer::render times each).
-    void run_vertex_stage(const perspective::Camera& camera, FrameCounts& counts);
+    void run_vertex_stage(const pipeline::Camera& camera, FrameCounts& counts);
     void set_up_triangles(FrameCounts& counts);
-    void set_up_piece(Piece& piece, const perspective::ClipPlanes& planes);
+    void set_up_piece(Piece& piece, const pipeline::ClipPlanes& planes);
     void keep_triangle(Piece& piece, const Setup& t);
-    void join_pieces(perspective::PipelineCounts& counts);
+    void join_pieces(pipeline::PipelineCounts& counts);
     void bin_triangles();
     void draw_tiles(rl::Image& frame);
     // render_depth()'s own first and last steps.
@@ -298,21 +298,21 @@ int Renderer::threads() const {
 }
 
 // 1. The vertex stage: lesson 07's vertex function, once per distinct vertex.
-void Renderer::Impl::run_vertex_stage(const perspective::Camera& camera, FrameCounts& counts) {
+void Renderer::Impl::run_vertex_stage(const pipeline::Camera& camera, FrameCounts& counts) {
     Impl& s = *this;
     const normal_mapping::RenderOptions& r = s.options.render;
     const float aspect = static_cast<float>(s.width) / static_cast<float>(s.height);
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    const rl::mat4 view_projection = pipeline::view_projection(camera, aspect);
     for (std::size_t i = 0; i < s.models.size(); ++i) {
         s.drawn[i] = false;
         if (!s.placed[i]) continue;
         shading::Placed& p = *s.placed[i];
-        const perspective::TexturedModel& model = s.models[i].source->lit.model;
+        const pipeline::TexturedModel& model = s.models[i].source->lit.model;
         p.uniforms.model_view_projection = view_projection * model.transform;
         p.uniforms.eye = camera.eye;
         for (std::size_t c = 0; c < 3; ++c) s.materials[i].eye[c] = camera.eye[c];
         if (r.cull_objects &&
-            perspective::outside_frustum(model.box, p.uniforms.model_view_projection)) {
+            pipeline::outside_frustum(model.box, p.uniforms.model_view_projection)) {
             ++counts.pipeline.objects_culled;
             continue;
         }
@@ -320,7 +320,7 @@ void Renderer::Impl::run_vertex_stage(const perspective::Camera& camera, FrameCo
         const normal_mapping::NormalMappedShader shader =
             normal_mapping::shader_for(*s.models[i].source, p, r);
         const FastModel& m = s.models[i];
-        std::vector<perspective::ClipVertex<Varyings>>& out = s.clip[i];
+        std::vector<pipeline::ClipVertex<Varyings>>& out = s.clip[i];
         s.for_each_vertex(m, counts, [&](std::size_t v) {
             if (s.options.vertex_cache) {
                 const int face = static_cast<int>(m.representative[v] / 3);
@@ -357,10 +357,10 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
     for (std::size_t i = 0; i < models.size(); ++i) {
         drawn[i] = true;  // lesson 08's pass culls no object
         const FastModel& m = models[i];
-        const perspective::TexturedModel& model = m.source->lit.model;
+        const pipeline::TexturedModel& model = m.source->lit.model;
         const rl::mat4 model_view_projection = view_projection * model.transform;
-        std::vector<perspective::ClipVertex<Varyings>>& out = clip[i];
-        const perspective::MeshView& view = views[i];
+        std::vector<pipeline::ClipVertex<Varyings>>& out = clip[i];
+        const pipeline::MeshView& view = views[i];
         for_each_vertex(m, counts, [&](std::size_t v) {
             // With the vertex cache, mesh corner c (a vertex's position does
             // not depend on the order the corners are handed over in);
@@ -371,9 +371,9 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
                 c = m.representative[v];
             else
                 c = c / 3 * 3 + static_cast<std::size_t>(view.mesh_corner(static_cast<int>(c % 3)));
-            const perspective::MeshCorner corner{&model.mesh, static_cast<int>(c / 3),
+            const pipeline::MeshCorner corner{&model.mesh, static_cast<int>(c / 3),
                                               static_cast<int>(c % 3)};
-            out[v] = {perspective::clip_position(model_view_projection, corner.position()), {}};
+            out[v] = {pipeline::clip_position(model_view_projection, corner.position()), {}};
         });
     }
 }
@@ -381,8 +381,8 @@ void Renderer::Impl::run_depth_vertex_stage(const rl::mat4& view_projection, Fra
 // 2. Cull, clip and set up every face, in lesson 07's order: the pieces
 // in parallel, each into its own triangles.
 void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
-    const perspective::ClipPlanes planes =
-        perspective::clip_planes(options.render.pipeline.clip, width, height);
+    const pipeline::ClipPlanes planes =
+        pipeline::clip_planes(options.render.pipeline.clip, width, height);
     if (options.parallel)
         workers.for_chunks(pieces.size(), 1, [&](const tbb::blocked_range<std::size_t>& range) {
             for (std::size_t c = range.begin(); c != range.end(); ++c)
@@ -395,14 +395,14 @@ void Renderer::Impl::set_up_triangles(FrameCounts& counts) {
 
 // One piece's faces through lesson 05's stages 2-4 (cull, clip, divide and
 // viewport, set-up), each triangle that comes out kept as a fast triangle.
-void Renderer::Impl::set_up_piece(Piece& piece, const perspective::ClipPlanes& planes) {
+void Renderer::Impl::set_up_piece(Piece& piece, const pipeline::ClipPlanes& planes) {
     piece.triangles.clear();
     piece.counts = {}, piece.visited = 0;
     const std::size_t i = piece.model;
     if (!drawn[i]) return;
     const FastModel& m = models[i];
-    const perspective::MeshView& view = views[i];
-    const std::vector<perspective::ClipVertex<Varyings>>& vertices = clip[i];
+    const pipeline::MeshView& view = views[i];
+    const std::vector<pipeline::ClipVertex<Varyings>>& vertices = clip[i];
     for (std::size_t f = piece.first_face; f < piece.first_face + piece.faces; ++f) {
         // The corners of step 1: with the vertex cache, three indices into
         // the distinct vertices, swapped as the surface swaps them when
@@ -411,7 +411,7 @@ void Renderer::Impl::set_up_piece(Piece& piece, const perspective::ClipPlanes& p
         std::size_t corner[3] = {3 * f, 3 * f + 1, 3 * f + 2};
         if (options.vertex_cache)
             for (int k = 0; k < 3; ++k) corner[k] = m.indices[3 * f + view.mesh_corner(k)];
-        perspective::assemble_face(vertices[corner[0]], vertices[corner[1]], vertices[corner[2]],
+        pipeline::assemble_face(vertices[corner[0]], vertices[corner[1]], vertices[corner[2]],
                                 static_cast<int>(f), planes, width, height, options.render.pipeline,
                                 piece.counts, [&](const Setup& t) { keep_triangle(piece, t); });
     }
@@ -424,7 +424,7 @@ void Renderer::Impl::keep_triangle(Piece& piece, const Setup& t) {
     // 05's boxes, before the fixed-point snap).
     if (options.depth_only)
         piece.visited += static_cast<double>(
-            perspective::box_samples(t.screen(), triangles::PixelRect{0, 0, width, height}));
+            pipeline::box_samples(t.screen(), triangles::PixelRect{0, 0, width, height}));
     FastTriangle& fast = piece.triangles.emplace_back();
     if (!fast_triangle(t, static_cast<std::uint32_t>(piece.model), width, height, fast)) {
         piece.triangles.pop_back();
@@ -441,7 +441,7 @@ void Renderer::Impl::keep_triangle(Piece& piece, const Setup& t) {
         // [doc:depth-bias]
         // Lesson 08's bias, once per triangle, and the nearest depth it
         // can then give (for the hierarchical depth test).
-        fast.depth_bias = perspective::depth_bias(t, bias);
+        fast.depth_bias = pipeline::depth_bias(t, bias);
         if (fast.depth_bias != 0)
             fast.z_nearest = std::clamp(fast.z_min + fast.depth_bias, 0.0f, 1.0f);
         // [/doc:depth-bias]
@@ -453,8 +453,8 @@ void Renderer::Impl::keep_triangle(Piece& piece, const Setup& t) {
 // The pieces, in order, as one array of triangles; their counts added up and
 // the overdraw cap applied over all of them (a shadow map's pass: each model
 // on its own, as lesson 08's does).
-void Renderer::Impl::join_pieces(perspective::PipelineCounts& counts) {
-    const perspective::PipelineOptions& pipeline = options.render.pipeline;
+void Renderer::Impl::join_pieces(pipeline::PipelineCounts& counts) {
+    const pipeline::PipelineOptions& pipeline = options.render.pipeline;
     // (A picture's cap of 0 or less is no cap; a map's is lesson 08's, 0 included.)
     const double most_visited = pipeline.max_overdraw > 0 || options.depth_only
                                     ? pipeline.max_overdraw * width * height
@@ -465,7 +465,7 @@ void Renderer::Impl::join_pieces(perspective::PipelineCounts& counts) {
         const Piece& piece = pieces[c];
         counts += piece.counts;
         if (options.depth_only && c > 0 && piece.model != pieces[c - 1].model) {
-            if (visited > most_visited) perspective::throw_overdraw(most_visited);
+            if (visited > most_visited) pipeline::throw_overdraw(most_visited);
             visited = 0;
         }
         visited += piece.visited;
@@ -476,7 +476,7 @@ void Renderer::Impl::join_pieces(perspective::PipelineCounts& counts) {
             throw std::runtime_error("more than 2^32 - 2 triangles in one frame");
     }
     triangles.start.back() = static_cast<std::uint32_t>(total);
-    if (visited > most_visited) perspective::throw_overdraw(most_visited);
+    if (visited > most_visited) pipeline::throw_overdraw(most_visited);
     counts.drawn = total;
 }
 
@@ -634,7 +634,7 @@ FrameCounts Renderer::Impl::timed_frame(StageTimes& times, Vertices&& vertex_ste
     return counts;
 }
 
-FrameCounts Renderer::render(const perspective::Camera& camera) {
+FrameCounts Renderer::render(const pipeline::Camera& camera) {
     Impl& s = *impl_;
     if (s.options.depth_only)
         throw std::logic_error("render: a depth_only renderer draws shadow maps (render_depth)");
@@ -654,7 +654,7 @@ FrameCounts Renderer::render_depth(const rl::mat4& view_projection, rl::FloatIma
         [&] { s.draw_depth_tiles(depth); });
 }
 
-OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames,
+OrbitRun render_orbit(Renderer& renderer, const pipeline::Camera& camera, int frames,
                       const std::function<void()>& between_frames) {
     std::vector<double> times, vertex, setup, binning, tiles;
     OrbitRun run;

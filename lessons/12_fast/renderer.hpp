@@ -71,7 +71,7 @@ struct StageTimes {
 // binned; its sample counts stay 0, the tiles' own being in `tiles`), the
 // vertex stage's runs, and the tiles' counts.
 struct FrameCounts {
-    perspective::PipelineCounts pipeline;
+    pipeline::PipelineCounts pipeline;
     std::size_t vertices = 0;  // vertex-stage runs (distinct vertices of the models drawn)
     TileCounts tiles;          // summed over the tiles
 };
@@ -92,11 +92,11 @@ class Renderer {
     Renderer(const std::vector<normal_mapping::MappedModel>& models, int width, int height,
              const FastOptions& options);
     ~Renderer();
-    FrameCounts render(const perspective::Camera& camera);
+    FrameCounts render(const pipeline::Camera& camera);
     // Lesson 08's shadow map pass on the same tiles (a renderer built with
     // depth_only): each texel of `depth` (width x height) the nearest biased
     // window depth seen through `view_projection`, 1 where nothing is.
-    // Throws perspective::OverdrawError for a model over the overdraw cap.
+    // Throws pipeline::OverdrawError for a model over the overdraw cap.
     FrameCounts render_depth(const rl::mat4& view_projection, rl::FloatImage& depth);
     // New lights for the frames to come (at most 8), without rebuilding the
     // models: the viewer's light moves with a key or a drag.
@@ -129,7 +129,7 @@ struct OrbitRun {
 };
 // `between_frames`, if given, runs after every frame but the last (the
 // Python module looks for Ctrl-C there).
-OrbitRun render_orbit(Renderer& renderer, const perspective::Camera& camera, int frames,
+OrbitRun render_orbit(Renderer& renderer, const pipeline::Camera& camera, int frames,
                       const std::function<void()>& between_frames = {});
 
 }  // namespace fast

@@ -28,7 +28,7 @@ const shadows::ShadowMap& ShadowPass::render(const shadows::LightView& light) {
     map_.light = light;
     try {
         renderer_.render_depth(light.view_projection, map_.depth);
-    } catch (const perspective::OverdrawError&) {
+    } catch (const pipeline::OverdrawError&) {
         // Lesson 08's words for it: the renderer's name a picture's cap.
         const double texels = static_cast<double>(options_.size) * options_.size;
         throw shadows::too_much_work(shadows::map_pipeline(options_).max_overdraw * texels,

@@ -23,7 +23,7 @@ class ShadowPass {
     ShadowPass(const std::vector<normal_mapping::MappedModel>& models,
                const shadows::ShadowMapOptions& options, int threads = 0);
     // The map of shadows::render_shadow_map(models, light, options); throws
-    // lesson 08's perspective::OverdrawError for a model over its cap.
+    // lesson 08's pipeline::OverdrawError for a model over its cap.
     const shadows::ShadowMap& render(const shadows::LightView& light);
     const StageTimes& times() const { return renderer_.times(); }
 

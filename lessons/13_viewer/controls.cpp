@@ -166,7 +166,7 @@ namespace {
 struct Frame {
     rl::vec3 up, ahead, side;
 };
-Frame frame_of(const perspective::Camera& start) {
+Frame frame_of(const pipeline::Camera& start) {
     Frame f;
     f.up = rl::normalize(start.up);
     const rl::vec3 offset = start.eye - start.target;
@@ -181,7 +181,7 @@ Frame frame_of(const perspective::Camera& start) {
 
 }  // namespace
 
-Orbit orbit_of(const perspective::Camera& camera) {
+Orbit orbit_of(const pipeline::Camera& camera) {
     const rl::vec3 offset = camera.eye - camera.target;
     Orbit orbit;
     orbit.distance = rl::length(offset);
@@ -194,8 +194,8 @@ Orbit orbit_of(const perspective::Camera& camera) {
     return orbit;
 }
 
-perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
-                           const perspective::ViewOptions& view, const perspective::Box& box,
+pipeline::Camera camera_of(const Orbit& orbit, const pipeline::Camera& start,
+                           const pipeline::ViewOptions& view, const pipeline::Box& box,
                            float aspect) {
     constexpr float radians = std::numbers::pi_v<float> / 180;
     const float yaw = orbit.yaw * radians, pitch = orbit.pitch * radians;
@@ -203,13 +203,13 @@ perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& sta
     const rl::vec3 offset = (f.ahead * std::cos(yaw) + f.side * std::sin(yaw)) * std::cos(pitch) +
                             f.up * std::sin(pitch);
     const rl::vec3 eye = start.target + offset * orbit.distance;
-    perspective::ViewOptions v = view;  // --near, --far as given; up as the first camera's
+    pipeline::ViewOptions v = view;  // --near, --far as given; up as the first camera's
     v.models.clear();
     v.eye = {eye.x, eye.y, eye.z};
     v.target = {start.target.x, start.target.y, start.target.z};
     v.up = {start.up.x, start.up.y, start.up.z};
     v.camera.fov_y = start.fov_y;
-    return perspective::resolve_camera(v, box, aspect);
+    return pipeline::resolve_camera(v, box, aspect);
 }
 
 std::string describe(const Settings& s) {

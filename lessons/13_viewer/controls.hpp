@@ -6,7 +6,7 @@
 //   viewer::Settings settings;
 //   viewer::Orbit orbit = viewer::orbit_of(camera);
 //   viewer::apply(viewer::Key::next_path, settings, orbit, first, first_orbit);  // fast -> 07
-//   const perspective::Camera seen = viewer::camera_of(orbit, camera, view, box, aspect);
+//   const pipeline::Camera seen = viewer::camera_of(orbit, camera, view, box, aspect);
 #pragma once
 
 #include <array>
@@ -102,13 +102,13 @@ rl::vec3 turned_light(rl::vec3 light, float yaw, float raise);
 
 // The orbit of a camera about its target, measured about its own up axis:
 // yaw 0 where it stands.
-Orbit orbit_of(const perspective::Camera& camera);
+Orbit orbit_of(const pipeline::Camera& camera);
 
 // The camera of an orbit about `start` (the first camera: its target, up and
 // field of view): the eye on the orbit, near and far as `view` gives them
 // (--near, --far) or fitted to `box`, as the programs frame them.
-perspective::Camera camera_of(const Orbit& orbit, const perspective::Camera& start,
-                           const perspective::ViewOptions& view, const perspective::Box& box,
+pipeline::Camera camera_of(const Orbit& orbit, const pipeline::Camera& start,
+                           const pipeline::ViewOptions& view, const pipeline::Box& box,
                            float aspect);
 
 // One line of the current settings, for the title bar and the tests.

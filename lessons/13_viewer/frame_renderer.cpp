@@ -21,7 +21,7 @@ FrameRenderer::FrameRenderer(const std::vector<normal_mapping::MappedModel>& mod
 }
 
 bool FrameRenderer::light_moved(const Settings& s) const {
-    return !(s.light == perspective::light_direction(request_.view));
+    return !(s.light == pipeline::light_direction(request_.view));
 }
 
 normal_mapping::RenderOptions FrameRenderer::options_for(const Settings& s) const {
@@ -50,12 +50,12 @@ shadows::ShadowOptions FrameRenderer::shadow_options(
     return shadowed;
 }
 
-const rl::Image& FrameRenderer::render(const Settings& settings, const perspective::Camera& camera,
+const rl::Image& FrameRenderer::render(const Settings& settings, const pipeline::Camera& camera,
                                        int width, int height) {
     stats_ = {faces_, 0, 0};
     const normal_mapping::RenderOptions options = options_for(settings);
     if (settings.path == Path::lesson07) {
-        perspective::ColourTarget target = perspective::colour_target(width, height);
+        pipeline::ColourTarget target = pipeline::colour_target(width, height);
         stats_.pixels_shaded = normal_mapping::render(models_, camera, options, target).shaded;
         picture_ = std::move(target.colour());
         frame_ = &picture_;

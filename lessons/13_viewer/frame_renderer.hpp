@@ -35,7 +35,7 @@ class FrameRenderer {
     // (its lighting and output set by normal_mapping::load_scene).
     FrameRenderer(const std::vector<normal_mapping::MappedModel>& models,
                   const normal_mapping::MappedView& request);
-    const rl::Image& render(const Settings& settings, const perspective::Camera& camera, int width,
+    const rl::Image& render(const Settings& settings, const pipeline::Camera& camera, int width,
                             int height);
     const FrameStats& stats() const { return stats_; }
     const rl::Image& frame() const { return *frame_; }

@@ -82,13 +82,13 @@ int main(int argc, char** argv) {
         if (frames > 0) fast::check_frames(frames, width, height);
         normal_mapping::MappedScene scene =
             normal_mapping::load_scene(cli, width, height, "13_viewer");
-        const perspective::Box box = normal_mapping::scene_box(scene.models);
+        const pipeline::Box box = normal_mapping::scene_box(scene.models);
         viewer::FrameRenderer renderer(scene.models, cli);
         viewer::Settings settings;
         settings.specular = cli.options.specular;
         settings.filter = cli.options.filter;
         settings.normal_map = cli.options.normal_map;
-        settings.light = perspective::light_direction(cli.view);
+        settings.light = pipeline::light_direction(cli.view);
         viewer::Orbit orbit = viewer::orbit_of(scene.camera);
         const viewer::Orbit first_orbit = orbit;
         const viewer::Settings first_settings = settings;
@@ -117,7 +117,7 @@ int main(int argc, char** argv) {
             const float aspect = static_cast<float>(w) / static_cast<float>(h);
             // Scripted frames follow lesson 12's orbit, so that the last one is
             // exactly the camera the options give (and lesson 12's image).
-            const perspective::Camera camera =
+            const pipeline::Camera camera =
                 frames > 0 ? fast::orbit(scene.camera, i, frames)
                            : viewer::camera_of(orbit, scene.camera, cli.view, box, aspect);
             const auto start = std::chrono::steady_clock::now();

@@ -16,11 +16,11 @@ namespace viewer {
 
 // The segment ab of clip space cut to w >= near (the part in front of the
 // eye); false when nothing of it is left.
-bool cut_to_front(perspective::ClipPosition& a, perspective::ClipPosition& b, double near);
+bool cut_to_front(pipeline::ClipPosition& a, pipeline::ClipPosition& b, double near);
 
 // Returns the number of edges drawn (each triangle's three, shared ones twice).
 std::size_t draw_wire_overlay(rl::Image& image,
                               const std::vector<normal_mapping::MappedModel>& models,
-                              const perspective::Camera& camera, rl::Rgba colour);
+                              const pipeline::Camera& camera, rl::Rgba colour);
 
 }  // namespace viewer

@@ -22,9 +22,9 @@ void bind_lesson06(py::module_ m) {
             options.model = choice("--shading", shading_model, shading::kShadingModels);
             const auto weights = choice("--weighting", weighting, shading::kWeightings);
             const float exponent = finite("--shininess", shininess, 0, 1e6);
-            const perspective::ViewOptions view = view_options(models, camera, light);
+            const pipeline::ViewOptions view = view_options(models, camera, light);
             options.output = naive ? shading::Output::naive : shading::Output::srgb;
-            options.lighting = shading::default_lighting(perspective::light_direction(view));
+            options.lighting = shading::default_lighting(pipeline::light_direction(view));
             if (one_light) options.lighting.lights.resize(1);
             options.lighting.shininess = exponent;
             Result r;
@@ -34,8 +34,8 @@ void bind_lesson06(py::module_ m) {
             check_signals();
             std::size_t computed = 0;
             for (const shading::LitModel& lit : scene.models) computed += lit.computed_normals;
-            perspective::ColourTarget frame = perspective::colour_target(width, height);
-            const perspective::PipelineCounts counts =
+            pipeline::ColourTarget frame = pipeline::colour_target(width, height);
+            const pipeline::PipelineCounts counts =
                 shading::render(scene.models, scene.camera, options, frame);
             take_frame(r, frame, counts, scene.camera);
             r.count("computed_normals", computed);

@@ -26,8 +26,8 @@ void bind_lesson07(py::module_ m) {
             py::gil_scoped_release unlocked;
             const auto scene = normal_mapping::load_scene(request, width, height, r.warnings);
             check_signals();
-            perspective::ColourTarget frame = perspective::colour_target(width, height);
-            const perspective::PipelineCounts counts =
+            pipeline::ColourTarget frame = pipeline::colour_target(width, height);
+            const pipeline::PipelineCounts counts =
                 normal_mapping::render(scene.models, scene.camera, request.options, frame);
             take_frame(r, frame, counts, scene.camera);
             return r;

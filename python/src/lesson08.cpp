@@ -48,7 +48,7 @@ void bind_lesson08(py::module_ m) {
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);
             options.render.specular = choice("--specular", specular, shading::kSpeculars);
             options.render.filter = choice("--texture-filter", texture_filter, textures::kFilters);
-            const perspective::ViewOptions view = view_options(models, camera, light);
+            const pipeline::ViewOptions view = view_options(models, camera, light);
             Result r;
             py::gil_scoped_release unlocked;
             shadows::set_lights(options, view, one_light);
@@ -59,8 +59,8 @@ void bind_lesson08(py::module_ m) {
             const shadows::ShadowMap map =
                 shadows::shadow_map_for(scene.models, scene.camera, aspect, options);
             check_signals();
-            perspective::ColourTarget frame = perspective::colour_target(width, height);
-            const perspective::PipelineCounts counts =
+            pipeline::ColourTarget frame = pipeline::colour_target(width, height);
+            const pipeline::PipelineCounts counts =
                 shadows::render(scene.models, scene.camera, options, map, frame);
             take_frame(r, frame, counts, scene.camera);
             if (picture == shadows::Show::shadow_map) {

@@ -57,7 +57,7 @@ void bind_lesson09(py::module_ m) {
             exposure_options.store =
                 choice("--frame-store", frame_store, environment::kFrameStores);
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);
-            const perspective::ViewOptions view = view_options(models, camera, default_light());
+            const pipeline::ViewOptions view = view_options(models, camera, default_light());
             Result r;
             py::gil_scoped_release unlocked;
             const auto scene = environment::load_scene(view, frames, width, height, r.warnings);
@@ -82,7 +82,7 @@ void bind_lesson09(py::module_ m) {
                 environment::make_environment(env_options, r.warnings);
             check_signals();
             environment::LightTarget frame = environment::light_target(width, height);
-            const perspective::PipelineCounts counts =
+            const pipeline::PipelineCounts counts =
                 environment::render(scene.models, scene.camera, env, options, frame);
             r.colour = environment::tone_mapped(frame.colour(), exposure_options);
             r.depth = std::move(*frame.depth());

@@ -50,7 +50,7 @@ void bind_lesson10(py::module_ m) {
                                               .blur = blur != d.blur,
                                               .no_rotation = !rotation,
                                               .light = three("--light", light) != scene_light});
-            const perspective::ViewOptions view = view_options(models, camera, light);
+            const pipeline::ViewOptions view = view_options(models, camera, light);
             Result r;
             py::gil_scoped_release unlocked;
             std::optional<occlusion::EnvironmentLighting> lighting;

@@ -47,7 +47,7 @@ void bind_lesson11(py::module_ m) {
             shadow.render.normal_map =
                 choice("--normal-map", normal_map, normal_mapping::kNormalMaps);
             const auto frames = choice("--tangents", tangents, normal_mapping::kTangentMethods);
-            const perspective::ViewOptions view = view_options(models, camera, light);
+            const pipeline::ViewOptions view = view_options(models, camera, light);
             Result r;
             py::gil_scoped_release unlocked;
             shadows::set_lights(shadow, view, false);

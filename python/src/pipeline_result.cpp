@@ -2,8 +2,8 @@
 
 namespace py_rl {
 
-void take_frame(Result& r, perspective::ColourTarget& frame, const perspective::PipelineCounts& counts,
-                const perspective::Camera& camera) {
+void take_frame(Result& r, pipeline::ColourTarget& frame, const pipeline::PipelineCounts& counts,
+                const pipeline::Camera& camera) {
     r.colour = std::move(frame.colour());
     if (const rl::FloatImage* depth = frame.depth(); depth && depth->width() == r.colour.width())
         r.depth = std::move(*depth);

@@ -9,7 +9,7 @@
 
 namespace py_rl {
 
-void take_frame(Result& r, perspective::ColourTarget& frame, const perspective::PipelineCounts& counts,
-                const perspective::Camera& camera);
+void take_frame(Result& r, pipeline::ColourTarget& frame, const pipeline::PipelineCounts& counts,
+                const pipeline::Camera& camera);
 
 }  // namespace py_rl

@@ -34,8 +34,8 @@ std::vector<std::string> model_paths(py::handle models) {
         return {model_path(models, "models")};  // (which says what a model is)
     std::vector<std::string> paths;
     for (py::handle m : models) {
-        if (paths.size() == perspective::kMaxModels)
-            throw py::value_error("--model: at most " + std::to_string(perspective::kMaxModels) +
+        if (paths.size() == pipeline::kMaxModels)
+            throw py::value_error("--model: at most " + std::to_string(pipeline::kMaxModels) +
                                   " models, each loaded whole");
         paths.push_back(model_path(m, "models"));
     }
@@ -45,9 +45,9 @@ std::vector<std::string> model_paths(py::handle models) {
     return paths;
 }
 
-perspective::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
+pipeline::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
                                    const std::vector<double>& light) {
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     view.models = model_paths(models);
     view.light = three("--light", light);
     if (camera) {
@@ -62,7 +62,7 @@ perspective::ViewOptions view_options(py::handle models, const std::optional<Cam
 }
 
 std::vector<double> default_light() {
-    const std::vector<float> light = perspective::ViewOptions{}.light;
+    const std::vector<float> light = pipeline::ViewOptions{}.light;
     return {light.begin(), light.end()};
 }
 

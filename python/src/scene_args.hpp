@@ -3,7 +3,7 @@
 // become what the programs' command lines fill: a model path, or lesson 05's
 // ViewOptions.
 //
-//   const perspective::ViewOptions view = py_rl::view_options(models, camera, light);
+//   const pipeline::ViewOptions view = py_rl::view_options(models, camera, light);
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -47,12 +47,12 @@ std::string model_path(py::handle model, const char* keyword = "model");
 std::string environment_source(py::handle environment);
 
 // None (the lesson's default scene), one model or a sequence of them (at most
-// perspective::kMaxModels, as --model).
+// pipeline::kMaxModels, as --model).
 std::vector<std::string> model_paths(py::handle models);
 
 // The view lesson 05's options would give: models, camera (None: framed) and
 // --light (three numbers).
-perspective::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
+pipeline::ViewOptions view_options(py::handle models, const std::optional<Camera>& camera,
                                    const std::vector<double>& light);
 
 // The programs' --light default (ViewOptions'), as a keyword's default.

@@ -17,18 +17,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (size < 12 * sizeof(float)) return 0;
     float f[12];
     std::memcpy(f, data, sizeof f);
-    std::array<perspective::ClipVertex<rl::vec2>, 3> triangle;
+    std::array<pipeline::ClipVertex<rl::vec2>, 3> triangle;
     for (std::size_t k = 0; k < 3; ++k)
         triangle[k] = {
             rl::cast<double>(rl::vec4{f[4 * k], f[4 * k + 1], f[4 * k + 2], f[4 * k + 3]}),
             {static_cast<float>(k), 1.0f}};
-    for (perspective::ClipMode mode : perspective::kClipModes) {
-        const perspective::ClipPolygon<rl::vec2> polygon =
-            perspective::clip_triangle(triangle, perspective::clip_planes(mode, 800, 600));
-        if (polygon.size < 0 || polygon.size > perspective::ClipPolygon<rl::vec2>::kCapacity)
+    for (pipeline::ClipMode mode : pipeline::kClipModes) {
+        const pipeline::ClipPolygon<rl::vec2> polygon =
+            pipeline::clip_triangle(triangle, pipeline::clip_planes(mode, 800, 600));
+        if (polygon.size < 0 || polygon.size > pipeline::ClipPolygon<rl::vec2>::kCapacity)
             std::abort();
         for (int i = 0; i < polygon.size; ++i)
-            if (!perspective::finite(polygon.vertices[static_cast<std::size_t>(i)].position))
+            if (!pipeline::finite(polygon.vertices[static_cast<std::size_t>(i)].position))
                 std::abort();
     }
     return 0;

@@ -1,6 +1,6 @@
 #include "clipping_scenes.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 ClippingScene around_eye_scene(int count) {
     ClippingScene s{std::to_string(count) + " triangles around the eye", {}, {}};
@@ -35,4 +35,4 @@ ClippingScene floor_scene() {
     return s;
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -5,8 +5,8 @@
 //   floor_scene       a vast floor seen from just above it, whose near cells
 //                     cut at the near plane reach far past the rasterizer's range.
 //
-//   const perspective::ClippingScene s = perspective::around_eye_scene(200);
-//   const rl::Grid<int> ids = perspective::pipeline_ids(s.triangles, s.camera, 512, 512, {});
+//   const pipeline::ClippingScene s = pipeline::around_eye_scene(200);
+//   const rl::Grid<int> ids = pipeline::pipeline_ids(s.triangles, s.camera, 512, 512, {});
 #pragma once
 
 #include <string>
@@ -14,7 +14,7 @@
 
 #include "05_perspective/truths/ray_truth.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 struct ClippingScene {
     std::string name;
@@ -29,4 +29,4 @@ ClippingScene around_eye_scene(int count);
 // with the near plane at 0.02.
 ClippingScene floor_scene();
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -39,28 +39,28 @@ int main(int argc, char** argv) {
     rl::ImageOptions image_options{"05_failures.tga"};
     image_options.width = image_options.height = 512;  // the lab's size
     SceneName scene = SceneName::around_eye;
-    perspective::PipelineOptions options;
+    pipeline::PipelineOptions options;
     bool truth = false;
     rl::add_image_options(app, image_options);
     rl::add_method_option(app, "--scene", scene, kScenes, "The lab's clipping scene");
-    rl::add_method_option(app, "--clip", options.clip, perspective::kClipModes, "Clipping");
+    rl::add_method_option(app, "--clip", options.clip, pipeline::kClipModes, "Clipping");
     app.add_flag("--truth", truth, "The lab's ray-cast truth instead of the pipeline");
     return app.run(argc, argv, "05_failures", [&] {
         rl::check_image_output(image_options.output);
-        const perspective::ClippingScene s = scene == SceneName::around_eye
-                                              ? perspective::around_eye_scene(200)
-                                              : perspective::floor_scene();
+        const pipeline::ClippingScene s = scene == SceneName::around_eye
+                                              ? pipeline::around_eye_scene(200)
+                                              : pipeline::floor_scene();
         const int width = image_options.width, height = image_options.height;
-        perspective::PipelineCounts counts;
+        pipeline::PipelineCounts counts;
         const rl::Grid<int> ids =
-            truth ? perspective::exact_ids(s.triangles, perspective::RayCamera(s.camera, width, height))
-                  : perspective::pipeline_ids(s.triangles, s.camera, width, height, options, &counts);
+            truth ? pipeline::exact_ids(s.triangles, pipeline::RayCamera(s.camera, width, height))
+                  : pipeline::pipeline_ids(s.triangles, s.camera, width, height, options, &counts);
         rl::Image picture(width, height);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) picture.set(x, y, id_colour(ids.get(x, y)));
         rl::save_image(image_options.output, picture);
         std::printf("%s, %s: %zu triangles clipped, %zu outside; into %s\n", s.name.c_str(),
-                    truth ? "ray-cast truth" : perspective::name(options.clip), counts.clipped,
+                    truth ? "ray-cast truth" : pipeline::name(options.clip), counts.clipped,
                     counts.outside, image_options.output.c_str());
         return 0;
     });

@@ -20,7 +20,7 @@
 
 namespace {
 
-using namespace perspective;
+using namespace pipeline;
 
 // ---------------------------------------------------------------- 1. interpolation
 
@@ -227,7 +227,7 @@ RenderOptions lod_options(LodMethod lod, textures::Filter filter) {
 }
 
 rl::Image render_floor(const LodScene& s, LodMethod lod, textures::Filter filter) {
-    perspective::ColourTarget frame = perspective::colour_target(s.size, s.size);
+    pipeline::ColourTarget frame = pipeline::colour_target(s.size, s.size);
     render(s.models, s.camera, lod_options(lod, filter), frame);
     return frame.colour();
 }

@@ -6,7 +6,7 @@
 #include "03_zbuffer/hidden_surfaces.hpp"
 #include "rasterlab/random.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 namespace {
 
@@ -124,4 +124,4 @@ std::vector<WorldTriangle> triangles_around(const Camera& camera, int count, uns
     return scene;
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -4,8 +4,8 @@
 // frustum-clipped coverage, exactly) and the texture coordinates there (the
 // exact perspective-correct value), for the lab and the tests.
 //
-//   const perspective::RayCamera rays(camera, 640, 480);
-//   const rl::Grid<int> truth = perspective::exact_ids(scene, rays);
+//   const pipeline::RayCamera rays(camera, 640, 480);
+//   const rl::Grid<int> truth = pipeline::exact_ids(scene, rays);
 #pragma once
 
 #include <optional>
@@ -13,7 +13,7 @@
 
 #include "05_perspective/pipeline.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 // A triangle in world space, in double, with texture coordinates.
 struct WorldTriangle {
@@ -100,4 +100,4 @@ IdDifference compare_ids(const rl::Grid<int>& truth, const rl::Grid<int>& ids);
 std::vector<WorldTriangle> triangles_around(const Camera& camera, int count, unsigned seed,
                                             double extent);
 
-}  // namespace perspective
+}  // namespace pipeline

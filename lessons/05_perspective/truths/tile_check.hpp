@@ -3,7 +3,7 @@
 // agree bit for bit in colour and depth (tiles are how lesson 12 spreads a
 // frame over threads), and a tile drawn alone must touch nothing outside it.
 //
-//   EXPECT_TRUE(perspective::tiles_add_up(300, 200, 64, [&](ColourTarget& frame,
+//   EXPECT_TRUE(pipeline::tiles_add_up(300, 200, 64, [&](ColourTarget& frame,
 //       std::optional<triangles::PixelRect> tile) { ... draw with options.tile = tile ... }));
 #pragma once
 
@@ -13,7 +13,7 @@
 
 #include "05_perspective/render_target.hpp"
 
-namespace perspective {
+namespace pipeline {
 
 template <class Draw>
 bool tiles_add_up(int width, int height, int tile_size, Draw&& draw) {
@@ -37,4 +37,4 @@ bool tiles_add_up(int width, int height, int tile_size, Draw&& draw) {
     return whole.colour() == tiled.colour() && *whole.depth() == *tiled.depth();
 }
 
-}  // namespace perspective
+}  // namespace pipeline

@@ -23,10 +23,10 @@ struct UnclampedPowShader {
     PhongShader phong;
     Lighting<float> matte;  // the lighting without its specular part
     using Varyings = PhongShader::Varyings;
-    perspective::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const SurfaceCorner& in) const {
         return phong.vertex(in);
     }
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         const rl::vec3 n = rl::normalize(f.varyings.normal);
         const rl::vec3 to_eye = rl::normalize(phong.u.eye - f.varyings.position);
         rl::vec3 c = reflected(matte, n, to_eye, phong.u.colour, phong.specular);
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         rl::check_image_output(image_options.output);
         rl::check_direction("--light", light);
         const int width = image_options.width, height = image_options.height;
-        perspective::Camera camera;  // the lab's view of the unit sphere
+        pipeline::Camera camera;  // the lab's view of the unit sphere
         camera.eye = {0, 0, 3.2f};
         camera.target = {0, 0, 0};
         camera.fov_y = 45;
@@ -85,14 +85,14 @@ int main(int argc, char** argv) {
         const float aspect = static_cast<float>(width) / static_cast<float>(height);
         const Uniforms u{.model_matrix = rl::mat4::identity(),
                          .normal_matrix = rl::mat3::identity(),
-                         .model_view_projection = perspective::view_projection(camera, aspect),
+                         .model_view_projection = pipeline::view_projection(camera, aspect),
                          .eye = camera.eye,
                          .lighting = lighting,
                          .colour = rl::vec3{0.8f, 0.35f, 0.2f}};
         const rl::Mesh sphere = uv_sphere(segments);
         const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
         const Surface surface(sphere, normals);
-        perspective::ColourTarget frame = perspective::colour_target(width, height);
+        pipeline::ColourTarget frame = pipeline::colour_target(width, height);
         if (mistake == Mistake::unclamped_pow) {
             if (model != ShadingModel::phong && model != ShadingModel::blinn_phong)
                 throw std::invalid_argument(

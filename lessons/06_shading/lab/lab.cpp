@@ -19,7 +19,7 @@ namespace {
 using namespace shading;
 
 struct Setup {
-    perspective::Camera camera;
+    pipeline::Camera camera;
     Lighting<float> lighting = default_lighting(rl::vec3{0.5f, 0.6f, 1.0f});
     rl::vec3 albedo{0.8f, 0.35f, 0.2f};  // linear: a terracotta red
     int size = 256;
@@ -34,10 +34,10 @@ struct Case {
 };
 
 rl::Image draw_sphere(const Setup& s, const Case& c) {
-    perspective::ColourTarget frame = perspective::colour_target(s.size, s.size);
+    pipeline::ColourTarget frame = pipeline::colour_target(s.size, s.size);
     Uniforms u{.model_matrix = rl::mat4::identity(),
                .normal_matrix = rl::mat3::identity(),
-               .model_view_projection = perspective::view_projection(s.camera, 1.0f),
+               .model_view_projection = pipeline::view_projection(s.camera, 1.0f),
                .eye = s.camera.eye,
                .lighting = s.lighting,
                .colour = s.albedo};

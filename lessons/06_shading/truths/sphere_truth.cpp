@@ -60,7 +60,7 @@ NormalError sphere_normal_error(const rl::Mesh& sphere, const std::vector<rl::ve
     return e;
 }
 
-rl::Image sphere_truth(const perspective::Camera& camera, int width, int height,
+rl::Image sphere_truth(const pipeline::Camera& camera, int width, int height,
                        const Lighting<float>& lighting, rl::vec3 albedo, Specular specular,
                        rl::Rgba background) {
     Lighting<double> l;
@@ -69,7 +69,7 @@ rl::Image sphere_truth(const perspective::Camera& camera, int width, int height,
     l.ambient = rl::cast<double>(lighting.ambient);
     l.specular = rl::cast<double>(lighting.specular);
     l.shininess = lighting.shininess;
-    const perspective::RayCamera rays(camera, width, height);  // lesson 05's pixel rays
+    const pipeline::RayCamera rays(camera, width, height);  // lesson 05's pixel rays
     const rl::dvec3 eye = rays.eye();
     rl::Image out(width, height, background);
     for (int y = 0; y < height; ++y)

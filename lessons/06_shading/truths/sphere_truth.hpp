@@ -32,7 +32,7 @@ NormalError sphere_normal_error(const rl::Mesh& sphere, const std::vector<rl::ve
 // The unit sphere at the origin as the camera sees it, lit by `lighting`
 // (converted to double) with the same specular model; background elsewhere.
 // `output` encodes as the program would: sRGB, or (naive) the light as bytes.
-rl::Image sphere_truth(const perspective::Camera& camera, int width, int height,
+rl::Image sphere_truth(const pipeline::Camera& camera, int width, int height,
                        const Lighting<float>& lighting, rl::vec3 albedo, Specular specular,
                        rl::Rgba background);
 

@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
     return app.run(argc, argv, "07_failures", [&] {
         rl::check_image_output(image_options.output);
         std::vector<std::string> warnings;
-        perspective::ViewOptions view;
+        pipeline::ViewOptions view;
         MappedModel model = [&] {
             switch (scene) {
                 case SceneName::globe:
@@ -104,11 +104,11 @@ int main(int argc, char** argv) {
         if (mistake == Mistake::handedness_ignored)
             for (rl::vec4& t : model.tangents) t.w = 1;
         const int width = image_options.width, height = image_options.height;
-        const perspective::Camera camera = perspective::resolve_camera(
-            view, perspective::bounds(model.lit.model.mesh, model.lit.model.transform),
+        const pipeline::Camera camera = pipeline::resolve_camera(
+            view, pipeline::bounds(model.lit.model.mesh, model.lit.model.transform),
             static_cast<float>(width) / static_cast<float>(height));
         const std::vector<MappedModel> models{std::move(model)};
-        perspective::ColourTarget frame = perspective::colour_target(width, height);
+        pipeline::ColourTarget frame = pipeline::colour_target(width, height);
         RenderOptions options;
         rl::check_direction("--light", light);
         options.lighting = shading::default_lighting(rl::vec3{light[0], light[1], light[2]});

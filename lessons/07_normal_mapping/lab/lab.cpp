@@ -36,7 +36,7 @@ struct Method {
 
 struct Globe {
     MappedModel model;
-    perspective::Camera camera;
+    pipeline::Camera camera;
     int size;
     shading::Uniforms uniforms;
 };
@@ -46,20 +46,20 @@ struct Globe {
 struct NormalProbe {
     NormalMappedShader shader;
     using Varyings = NormalMappedShader::Varyings;
-    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return shader.vertex(in);
     }
-    rl::vec3 fragment(const perspective::Fragment<Varyings>& f) const {
+    rl::vec3 fragment(const pipeline::Fragment<Varyings>& f) const {
         return shader.normal_at(f, f.d_dx(&Varyings::uv), f.d_dy(&Varyings::uv));
     }
 };
 
 rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl::vec4>& tangents,
                          NormalMap source, textures::Filter filter = textures::Filter::trilinear) {
-    perspective::RenderTarget<rl::vec3> normals(g.size, g.size, {}, rl::vec3{NAN, NAN, NAN});
+    pipeline::RenderTarget<rl::vec3> normals(g.size, g.size, {}, rl::vec3{NAN, NAN, NAN});
     const NormalProbe p{
         {g.uniforms, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents, filter}};
-    perspective::draw(shading::Surface(g.model.lit.model.mesh, g.model.lit.normals), p, normals);
+    pipeline::draw(shading::Surface(g.model.lit.model.mesh, g.model.lit.normals), p, normals);
     return normals.colour();
 }
 
@@ -67,7 +67,7 @@ rl::Grid<rl::vec3> probe(const Globe& g, const Maps& maps, const std::vector<rl:
 // whose (u, v) give the relief's normal.
 rl::Grid<rl::vec3> exact_normals(const Globe& g) {
     rl::Grid<rl::vec3> out(g.size, g.size, rl::vec3{NAN, NAN, NAN});
-    const perspective::RayCamera rays(g.camera, g.size, g.size);  // lesson 05's pixel rays
+    const pipeline::RayCamera rays(g.camera, g.size, g.size);  // lesson 05's pixel rays
     const rl::dvec3 eye = rays.eye();
     const double r = assets::kGlobeRadius;
     for (int y = 0; y < g.size; ++y)
@@ -118,14 +118,14 @@ struct Timed {
 // (the program's path) with some options, or by the port of tinyrenderer.
 struct LessonFrame {
     const std::vector<MappedModel>* models;
-    perspective::Camera camera;
+    pipeline::Camera camera;
     RenderOptions options;
     int size;
 };
 
 void frame_lesson(benchmark::State& state, const LessonFrame* f) {
     for (auto _ : state) {
-        perspective::ColourTarget frame = perspective::colour_target(f->size, f->size);
+        pipeline::ColourTarget frame = pipeline::colour_target(f->size, f->size);
         benchmark::DoNotOptimize(render(*f->models, f->camera, f->options, frame).shaded);
     }
 }
@@ -136,18 +136,18 @@ void frame_lesson(benchmark::State& state, const LessonFrame* f) {
 void frame_depth_only(benchmark::State& state, const LessonFrame* f) {
     const MappedModel& m = f->models->front();
     const shading::UnlitShader unlit{
-        perspective::view_projection(f->camera, 1.0f) * m.lit.model.transform, {}};
+        pipeline::view_projection(f->camera, 1.0f) * m.lit.model.transform, {}};
     for (auto _ : state) {
-        perspective::RenderTarget<> depth(f->size, f->size);
+        pipeline::RenderTarget<> depth(f->size, f->size);
         benchmark::DoNotOptimize(
-            perspective::draw(shading::Surface(m.lit.model.mesh, m.lit.normals), unlit, depth).shaded);
+            pipeline::draw(shading::Surface(m.lit.model.mesh, m.lit.normals), unlit, depth).shaded);
     }
 }
 
 struct PortFrame {
     const rl::Mesh* mesh;
     tinyrenderer_port::Textures textures;
-    perspective::Camera camera;
+    pipeline::Camera camera;
     int size;
 };
 
@@ -166,7 +166,7 @@ void build_tangents(benchmark::State& state, const shading::LitModel* lit, Tange
 
 void render_globe(benchmark::State& state, const Timed* t) {
     for (auto _ : state) {
-        perspective::ColourTarget frame = perspective::colour_target(t->globe->size, t->globe->size);
+        pipeline::ColourTarget frame = pipeline::colour_target(t->globe->size, t->globe->size);
         const NormalMappedShader shader{
             t->globe->uniforms, *t->maps, t->source, shading::Specular::blinn_phong, 1.0f,
             t->tangents};
@@ -196,7 +196,7 @@ int main(int argc, char** argv) {
         g.uniforms =
             shading::Uniforms{.model_matrix = rl::mat4::identity(),
                               .normal_matrix = rl::mat3::identity(),
-                              .model_view_projection = perspective::view_projection(g.camera, 1.0f),
+                              .model_view_projection = pipeline::view_projection(g.camera, 1.0f),
                               .eye = g.camera.eye,
                               .lighting = shading::default_lighting(rl::vec3{0.3f, 0.5f, 1.0f}),
                               .texture = &g.model.lit.model.texture};
@@ -291,7 +291,7 @@ int main(int argc, char** argv) {
         crate.camera = g.camera;
         crate.camera.eye = {0.3f, -0.4f, 2.4f};
         crate.uniforms = g.uniforms;
-        crate.uniforms.model_view_projection = perspective::view_projection(crate.camera, 1.0f);
+        crate.uniforms.model_view_projection = pipeline::view_projection(crate.camera, 1.0f);
         crate.uniforms.eye = crate.camera.eye;
         crate.uniforms.texture = &crate.model.lit.model.texture;
         const rl::Mesh& box = crate.model.lit.model.mesh;
@@ -331,7 +331,7 @@ int main(int argc, char** argv) {
                     .fragments;
             const AngleError tr = compare(big_truth, theirs);
             const auto fragments_of = [](const LessonFrame& f) {
-                perspective::ColourTarget frame = perspective::colour_target(f.size, f.size);
+                pipeline::ColourTarget frame = pipeline::colour_target(f.size, f.size);
                 return render(*f.models, f.camera, f.options, frame).shaded;
             };
             const auto row = [&](const std::string& name, const char* timer, std::size_t fragments,

@@ -10,7 +10,7 @@ namespace {
 void replace_mesh(MappedModel& m, rl::Mesh mesh, TangentMethod method) {
     m.lit.model.mesh = std::move(mesh);
     m.lit.normals = shading::corner_normals(m.lit.model.mesh, shading::Weighting::angle);
-    m.lit.model.box = perspective::bounds(m.lit.model.mesh, m.lit.model.transform);
+    m.lit.model.box = pipeline::bounds(m.lit.model.mesh, m.lit.model.transform);
     m.tangents = corner_tangents(m.lit.model.mesh, m.lit.normals, method);
 }
 

@@ -149,7 +149,7 @@ struct PhongShader : IShader {
 
 }  // namespace
 
-Result render(const rl::Mesh& mesh, const Textures& textures, const perspective::Camera& camera,
+Result render(const rl::Mesh& mesh, const Textures& textures, const pipeline::Camera& camera,
               rl::vec3 light, int width, int height, rl::Grid<rl::vec3>* normals) {
     Result out{rl::Image(width, height, rl::kBackground), 0};
     std::vector<double> zbuffer(static_cast<std::size_t>(width) * static_cast<std::size_t>(height),

@@ -36,7 +36,7 @@ struct Result {
 
 // Renders the mesh; if `normals` is given (width x height), it receives the
 // world-space normal the shader used at each pixel it drew.
-Result render(const rl::Mesh& mesh, const Textures& textures, const perspective::Camera& camera,
+Result render(const rl::Mesh& mesh, const Textures& textures, const pipeline::Camera& camera,
               rl::vec3 light, int width, int height, rl::Grid<rl::vec3>* normals = nullptr);
 
 }  // namespace tinyrenderer_port

@@ -16,8 +16,8 @@ int main(int argc, char** argv) {
     rl::CommandLine app{
         "The lab's port of tinyrenderer's renderer: one OBJ, its diffuse and normal maps."};
     rl::ImageOptions image_options{"tinyrenderer_port.tga"};
-    perspective::ViewOptions view;
-    perspective::add_view_options(app, view, "the globe from obj/");
+    pipeline::ViewOptions view;
+    pipeline::add_view_options(app, view, "the globe from obj/");
     rl::add_image_options(app, image_options);
     return app.run(argc, argv, "07_tinyrenderer_port", [&] {
         rl::check_image_output(image_options.output);
@@ -37,12 +37,12 @@ int main(int argc, char** argv) {
             rl::load_texture(mesh, 0, rl::TextureRole::normal_tangent, warnings).image;
         rl::print_warnings("07_tinyrenderer_port", warnings);
         const int width = image_options.width, height = image_options.height;
-        const perspective::Camera camera =
-            perspective::resolve_camera(view, perspective::bounds(mesh, rl::mat4::identity()),
+        const pipeline::Camera camera =
+            pipeline::resolve_camera(view, pipeline::bounds(mesh, rl::mat4::identity()),
                                      static_cast<float>(width) / static_cast<float>(height));
         const auto start = std::chrono::steady_clock::now();
         const tinyrenderer_port::Result result = tinyrenderer_port::render(
-            mesh, {&diffuse, &normals}, camera, perspective::light_direction(view), width, height);
+            mesh, {&diffuse, &normals}, camera, pipeline::light_direction(view), width, height);
         const std::chrono::duration<double, std::milli> took =
             std::chrono::steady_clock::now() - start;
         rl::save_image(image_options.output, result.image);

@@ -32,7 +32,7 @@ using namespace shadows;
 
 struct Setup {
     std::vector<normal_mapping::MappedModel> models;
-    perspective::Camera camera;
+    pipeline::Camera camera;
     int size = 800;
 };
 
@@ -43,14 +43,14 @@ struct Case {
 };
 
 // Both passes, as the program runs them, into a frame the caller keeps.
-void draw_frame(const Setup& s, const ShadowOptions& o, perspective::ColourTarget& frame) {
+void draw_frame(const Setup& s, const ShadowOptions& o, pipeline::ColourTarget& frame) {
     frame.clear(rl::kBackground);
     const ShadowMap map = shadow_map_for(s.models, s.camera, 1, o);
     render(s.models, s.camera, o, map, frame);
 }
 
 void time_frame(benchmark::State& state, const Setup* s, const Case* c) {
-    perspective::ColourTarget frame = perspective::colour_target(s->size, s->size);
+    pipeline::ColourTarget frame = pipeline::colour_target(s->size, s->size);
     for (auto _ : state) {
         draw_frame(*s, c->options, frame);
         benchmark::DoNotOptimize(frame.colour().get(0, 0));
@@ -78,8 +78,8 @@ int main(int argc, char** argv) {
         setup.models = default_scene(warnings);
         normal_mapping::build_mip_levels(setup.models);
         setup.size = options.quick ? 96 : 800;
-        const perspective::ViewOptions view;  // the program's default view, framed
-        setup.camera = perspective::resolve_camera(view, scene_box(setup.models), 1);
+        const pipeline::ViewOptions view;  // the program's default view, framed
+        setup.camera = pipeline::resolve_camera(view, scene_box(setup.models), 1);
         ShadowOptions base;
         base.light.direction = rl::normalize(rl::vec3{1.0f, 0.6f, 0.6f});  // the program's default
         base.render.lighting = shading::default_lighting(base.light.direction);
@@ -126,7 +126,7 @@ int main(int argc, char** argv) {
             cases.push_back(scene_fit);
             Case back{"setup", "back faces in the map (no bias)", 0,
                       hard_without_bias(base, base.map.size)};
-            back.options.map.cull = perspective::Cull::front;
+            back.options.map.cull = pipeline::Cull::front;
             cases.push_back(back);
             Case spot{"setup", "spot light", 0, base};
             spot.options.light.type = LightType::spot;
@@ -201,13 +201,13 @@ int main(int argc, char** argv) {
         // the view holds: the view's map must still hold it.
         rl::ResultsTable fits({"view", "fit", "texel_size", "wrongly_lit_percent",
                                "wrongly_shadowed_percent", "wrong_percent", "scored_pixels"});
-        perspective::ViewOptions close_view;
+        pipeline::ViewOptions close_view;
         close_view.eye = {0.2f, 0.25f, -0.35f};
         close_view.target = {-1.0f, 0.05f, -0.9f};
-        const std::pair<const char*, perspective::Camera> views[] = {
+        const std::pair<const char*, pipeline::Camera> views[] = {
             {"the program's default", setup.camera},
             {"close to the floor, the crate behind the eye",
-             perspective::resolve_camera(close_view, scene_box(setup.models), 1)}};
+             pipeline::resolve_camera(close_view, scene_box(setup.models), 1)}};
         for (const auto& [view_name, camera] : views) {
             std::optional<TruthFrame> truth;
             for (Fit fit : kFits) {

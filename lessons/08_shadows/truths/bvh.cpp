@@ -7,7 +7,7 @@
 namespace shadows {
 namespace {
 
-rl::dvec3 centre(const perspective::WorldTriangle& t) {
+rl::dvec3 centre(const pipeline::WorldTriangle& t) {
     return (t.p[0] + t.p[1] + t.p[2]) * (1.0 / 3);
 }
 
@@ -27,7 +27,7 @@ bool crosses(rl::dvec3 low, rl::dvec3 high, rl::dvec3 origin, rl::dvec3 inverse,
 
 }  // namespace
 
-Bvh::Bvh(std::vector<perspective::WorldTriangle> triangles) : triangles_(std::move(triangles)) {
+Bvh::Bvh(std::vector<pipeline::WorldTriangle> triangles) : triangles_(std::move(triangles)) {
     if (triangles_.empty()) return;
     order_.resize(triangles_.size());
     for (std::size_t i = 0; i < order_.size(); ++i) order_[i] = static_cast<int>(i);
@@ -46,7 +46,7 @@ Bvh::Bvh(std::vector<perspective::WorldTriangle> triangles) : triangles_(std::mo
         node.high = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
         rl::dvec3 c_low = node.low, c_high = node.high;
         for (int i = task.first; i < task.first + task.count; ++i) {
-            const perspective::WorldTriangle& t =
+            const pipeline::WorldTriangle& t =
                 triangles_[static_cast<std::size_t>(order_[static_cast<std::size_t>(i)])];
             for (const rl::dvec3& p : t.p)
                 for (std::size_t k = 0; k < 3; ++k) {
@@ -107,8 +107,8 @@ RayHit Bvh::trace(rl::dvec3 origin, rl::dvec3 d, double t_min, double t_max) con
         }
         for (int i = node.first; i < node.first + node.count; ++i) {
             const int index = order_[static_cast<std::size_t>(i)];
-            const std::optional<perspective::Hit> hit =
-                perspective::intersect(triangles_[static_cast<std::size_t>(index)], origin, d);
+            const std::optional<pipeline::Hit> hit =
+                pipeline::intersect(triangles_[static_cast<std::size_t>(index)], origin, d);
             if (!hit || !(hit->depth > t_min) || !(hit->depth < std::min(t_max, best.t))) continue;
             best = {index, hit->depth};
             if constexpr (kAny) return best;

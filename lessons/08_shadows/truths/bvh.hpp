@@ -23,14 +23,14 @@ struct RayHit {
 
 class Bvh {
   public:
-    explicit Bvh(std::vector<perspective::WorldTriangle> triangles);
+    explicit Bvh(std::vector<pipeline::WorldTriangle> triangles);
 
     // The nearest triangle the ray origin + t d meets with t in (t_min, t_max).
     RayHit nearest(rl::dvec3 origin, rl::dvec3 d, double t_min, double t_max) const;
     // Whether any triangle meets it there (a shadow ray: stops at the first).
     bool any(rl::dvec3 origin, rl::dvec3 d, double t_min, double t_max) const;
 
-    const std::vector<perspective::WorldTriangle>& triangles() const { return triangles_; }
+    const std::vector<pipeline::WorldTriangle>& triangles() const { return triangles_; }
 
   private:
     struct Node {
@@ -40,7 +40,7 @@ class Bvh {
     };
     template <bool kAny>
     RayHit trace(rl::dvec3 origin, rl::dvec3 d, double t_min, double t_max) const;
-    std::vector<perspective::WorldTriangle> triangles_;  // as given
+    std::vector<pipeline::WorldTriangle> triangles_;  // as given
     std::vector<int> order_;                          // triangle indices, grouped by leaf
     std::vector<Node> nodes_;
 };

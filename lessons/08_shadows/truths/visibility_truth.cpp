@@ -5,14 +5,14 @@
 
 namespace shadows {
 
-std::vector<perspective::WorldTriangle> world_triangles(
+std::vector<pipeline::WorldTriangle> world_triangles(
     const std::vector<normal_mapping::MappedModel>& models) {
-    std::vector<perspective::WorldTriangle> out;
+    std::vector<pipeline::WorldTriangle> out;
     for (const normal_mapping::MappedModel& m : models) {
         const rl::Mesh& mesh = m.lit.model.mesh;
         const rl::dmat4 transform = rl::cast<double>(m.lit.model.transform);
         for (const rl::Face& face : mesh.faces) {
-            perspective::WorldTriangle t{};
+            pipeline::WorldTriangle t{};
             for (int k = 0; k < 3; ++k)
                 t.p[k] =
                     (transform * rl::extend(rl::cast<double>(mesh.position(face, k)), 1.0)).xyz();
@@ -24,15 +24,15 @@ std::vector<perspective::WorldTriangle> world_triangles(
 
 SceneRays::SceneRays(const std::vector<normal_mapping::MappedModel>& models)
     : bvh_(world_triangles(models)) {
-    const perspective::Box box = scene_box(models);
+    const pipeline::Box box = scene_box(models);
     scale_ = box.empty() ? 1 : std::max(static_cast<double>(rl::length(box.max - box.min)), 1e-30);
 }
 
 // [doc:visibility-truth]
-TruthFrame SceneRays::truth(const perspective::Camera& camera, int width, int height,
+TruthFrame SceneRays::truth(const pipeline::Camera& camera, int width, int height,
                             const LightView& light, float cone_degrees) const {
     TruthFrame out{rl::Grid<int>(width, height, -1), rl::FloatImage(width, height, NAN)};
-    const perspective::RayCamera rays(camera, width, height);
+    const pipeline::RayCamera rays(camera, width, height);
     const rl::dvec3 towards = -rl::normalize(rl::cast<double>(light.direction));
     const rl::dvec3 spot = rl::cast<double>(light.position);
     for (int y = 0; y < height; ++y)
@@ -41,7 +41,7 @@ TruthFrame SceneRays::truth(const perspective::Camera& camera, int width, int he
             const RayHit hit = bvh_.nearest(rays.eye(), d, rays.near(), rays.far());
             if (hit.triangle < 0) continue;
             out.triangle.at(x, y) = hit.triangle;
-            const perspective::WorldTriangle& t =
+            const pipeline::WorldTriangle& t =
                 bvh_.triangles()[static_cast<std::size_t>(hit.triangle)];
             rl::dvec3 normal = rl::normalize(rl::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
             if (rl::dot(normal, d) > 0) normal = -normal;  // the side the eye sees
@@ -62,11 +62,11 @@ TruthFrame SceneRays::truth(const perspective::Camera& camera, int width, int he
 }
 // [/doc:visibility-truth]
 
-rl::FloatImage SceneRays::soft(const TruthFrame& hard, const perspective::Camera& camera,
+rl::FloatImage SceneRays::soft(const TruthFrame& hard, const pipeline::Camera& camera,
                                const LightView& light, double radius_degrees) const {
     const int width = hard.lit.width(), height = hard.lit.height();
     rl::FloatImage out(width, height, NAN);
-    const perspective::RayCamera rays(camera, width, height);
+    const pipeline::RayCamera rays(camera, width, height);
     const rl::dvec3 towards = -rl::normalize(rl::cast<double>(light.direction));
     // Two axes across the light's direction, and 16 points of the unit disc
     // (4 rings of 4, the rings at equal areas, each turned a quarter step).
@@ -86,7 +86,7 @@ rl::FloatImage SceneRays::soft(const TruthFrame& hard, const perspective::Camera
             if (std::isnan(hard.lit.at(x, y))) continue;
             const rl::dvec3 d = rays.direction(x + 0.5, y + 0.5);
             const RayHit hit = bvh_.nearest(rays.eye(), d, rays.near(), rays.far());
-            const perspective::WorldTriangle& t =
+            const pipeline::WorldTriangle& t =
                 bvh_.triangles()[static_cast<std::size_t>(hit.triangle)];
             rl::dvec3 normal = rl::normalize(rl::cross(t.p[1] - t.p[0], t.p[2] - t.p[0]));
             if (rl::dot(normal, d) > 0) normal = -normal;
@@ -107,10 +107,10 @@ struct ProbeShader {
     ShadowedShader shaded;
     int first_triangle;  // the model's first triangle in world_triangles()' numbering
     using Varyings = ShadowedShader::Varyings;
-    perspective::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
+    pipeline::ClipVertex<Varyings> vertex(const shading::SurfaceCorner& in) const {
         return shaded.vertex(in);
     }
-    std::tuple<float, int> fragment(const perspective::Fragment<Varyings>& f) const {
+    std::tuple<float, int> fragment(const pipeline::Fragment<Varyings>& f) const {
         return {shaded.light_reaching(f.varyings), first_triangle + f.face()};
     }
 };
@@ -118,9 +118,9 @@ struct ProbeShader {
 }  // namespace
 
 ProbeFrame probe(const std::vector<normal_mapping::MappedModel>& models,
-                 const perspective::Camera& camera, int width, int height,
+                 const pipeline::Camera& camera, int width, int height,
                  const ShadowOptions& options, const ShadowMap& map) {
-    perspective::RenderTarget<float, int> target(width, height, {}, NAN, -1);
+    pipeline::RenderTarget<float, int> target(width, height, {}, NAN, -1);
     // Each model's first triangle in world_triangles()' numbering.
     std::vector<int> first(models.size() + 1, 0);
     for (std::size_t i = 0; i < models.size(); ++i)
@@ -130,7 +130,7 @@ ProbeFrame probe(const std::vector<normal_mapping::MappedModel>& models,
                   [&](const normal_mapping::MappedModel& m, const shading::Surface& surface,
                       const ShadowedShader& shader) {
                       const auto index = static_cast<std::size_t>(&m - models.data());
-                      return perspective::draw(surface, ProbeShader{shader, first[index]}, target,
+                      return pipeline::draw(surface, ProbeShader{shader, first[index]}, target,
                                             options.render.pipeline);
                   });
     return {std::move(target.colour<0>()), std::move(target.colour<1>())};

@@ -20,7 +20,7 @@ namespace shadows {
 
 // The scene's triangles in world space, in double, in the order the probe
 // numbers them: model after model, face after face.
-std::vector<perspective::WorldTriangle> world_triangles(
+std::vector<pipeline::WorldTriangle> world_triangles(
     const std::vector<normal_mapping::MappedModel>& models);
 
 // Per pixel, the triangle seen (-1: none) and whether the light reaches
@@ -37,14 +37,14 @@ class SceneRays {
     explicit SceneRays(const std::vector<normal_mapping::MappedModel>& models);
     // `light`: the map's light view (its kind, position and axis); a spot's
     // cone as the renderer's cone_factor() sees it.
-    TruthFrame truth(const perspective::Camera& camera, int width, int height, const LightView& light,
+    TruthFrame truth(const pipeline::Camera& camera, int width, int height, const LightView& light,
                      float cone_degrees = 180) const;
     // The same points lit by a round light of the given angular radius
     // (directional lights only): per pixel, the share of 16 rays towards
     // points of its disc that pass, NaN where truth() is NaN. The sun is
     // 0.27 degrees in radius; percentage-closer filters are scored against
     // this, since their soft edges stand for such a light.
-    rl::FloatImage soft(const TruthFrame& hard, const perspective::Camera& camera,
+    rl::FloatImage soft(const TruthFrame& hard, const pipeline::Camera& camera,
                         const LightView& light, double radius_degrees) const;
     const Bvh& bvh() const { return bvh_; }
 
@@ -60,7 +60,7 @@ struct ProbeFrame {
     rl::Grid<int> triangle;
 };
 ProbeFrame probe(const std::vector<normal_mapping::MappedModel>& models,
-                 const perspective::Camera& camera, int width, int height,
+                 const pipeline::Camera& camera, int width, int height,
                  const ShadowOptions& options, const ShadowMap& map);
 
 // Over the scored pixels (both see the same triangle, the truth judges

@@ -55,18 +55,18 @@ rl::dvec3 lab_sky(rl::dvec3 direction) {
 
 struct View {
     const char* name;
-    perspective::Camera camera;
+    pipeline::Camera camera;
 };
 
 std::vector<View> views() {
-    perspective::Camera horizon;  // the program's default view
+    pipeline::Camera horizon;  // the program's default view
     horizon.eye = {0.3f, 0.35f, 3.8f};
     horizon.target = {0, 0, 0};
-    perspective::Camera edge;  // along the edge between the -x and -z faces
+    pipeline::Camera edge;  // along the edge between the -x and -z faces
     edge.eye = {0, 0, 0};
     edge.target = {-1, 0.15f, -1};
     edge.fov_y = 60;
-    perspective::Camera zenith;  // straight up: the lat-long map's pole
+    pipeline::Camera zenith;  // straight up: the lat-long map's pole
     zenith.eye = {0, 0, 0};
     zenith.target = {0, 1, 0};
     zenith.up = {0, 0, -1};
@@ -92,13 +92,13 @@ std::vector<Method> methods() {
 }
 
 // The sky pass alone into a frame the models left empty.
-rl::Image sky_picture(const Environment& env, const perspective::Camera& camera, int size) {
+rl::Image sky_picture(const Environment& env, const pipeline::Camera& camera, int size) {
     LightTarget frame = light_target(size, size);
     draw_skybox(env, camera, frame);
     return tone_mapped(frame.colour(), {});
 }
 
-void sky_pass(benchmark::State& state, const Environment* env, perspective::Camera camera, int size) {
+void sky_pass(benchmark::State& state, const Environment* env, pipeline::Camera camera, int size) {
     LightTarget frame = light_target(size, size);
     for (auto _ : state) {
         draw_skybox(*env, camera, frame);

@@ -6,7 +6,7 @@
 namespace environment {
 
 rl::Grid<rl::vec3> sky_truth(const std::function<rl::dvec3(rl::dvec3)>& radiance,
-                             const perspective::Camera& camera, int width, int height, int samples) {
+                             const pipeline::Camera& camera, int width, int height, int samples) {
     rl::Grid<rl::vec3> out(width, height);
     const PixelRays rays(camera, width, height);
     for (int y = 0; y < height; ++y)

@@ -15,7 +15,7 @@
 namespace environment {
 
 rl::Grid<rl::vec3> sky_truth(const std::function<rl::dvec3(rl::dvec3)>& radiance,
-                             const perspective::Camera& camera, int width, int height, int samples);
+                             const pipeline::Camera& camera, int width, int height, int samples);
 
 // How far a picture is from the truth, in 8-bit levels after the tone map
 // and sRGB: the mean over pixels and channels, the 99th percentile of each

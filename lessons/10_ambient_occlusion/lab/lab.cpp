@@ -37,7 +37,7 @@ struct Setup {
     const Screen* screen = nullptr;
     // For the baked method: what draw_baked needs, and the bakes by rays a vertex.
     const std::vector<normal_mapping::MappedModel>* models = nullptr;
-    const perspective::Camera* camera = nullptr;
+    const pipeline::Camera* camera = nullptr;
     const shadows::ShadowOptions* shadow = nullptr;
     const shadows::ShadowMap* map = nullptr;
     std::map<int, BakedAo> bakes;
@@ -94,9 +94,9 @@ int main(int argc, char** argv) {
         normal_mapping::build_mip_levels(models);
         const int size = options.quick ? 96 : 800;
         const int truth_rays = options.quick ? 64 : 1024;
-        const perspective::ViewOptions view;  // the program's default view, framed
-        const perspective::Camera camera =
-            perspective::resolve_camera(view, shadows::scene_box(models), 1);
+        const pipeline::ViewOptions view;  // the program's default view, framed
+        const pipeline::Camera camera =
+            pipeline::resolve_camera(view, shadows::scene_box(models), 1);
         SceneOptions scene;
         shadows::set_lights(scene.shadow, view, false);
         const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, 1, scene.shadow);

@@ -10,10 +10,10 @@
 namespace occlusion {
 
 // [doc:truth-frame]
-TruthFrame truth_frame(const RayTracedAo& rays, const perspective::Camera& camera, int width,
+TruthFrame truth_frame(const RayTracedAo& rays, const pipeline::Camera& camera, int width,
                        int height, double radius, int count) {
     TruthFrame out{rl::FloatImage(width, height, NAN), rl::FloatImage(width, height, NAN)};
-    const perspective::RayCamera eye(camera, width, height);
+    const pipeline::RayCamera eye(camera, width, height);
     rl::parallel_for(0, height, [&](int y) {
         for (int x = 0; x < width; ++x) {
             const rl::dvec3 d = eye.direction(x + 0.5, y + 0.5);  // t along it is view depth

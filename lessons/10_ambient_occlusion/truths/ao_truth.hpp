@@ -20,7 +20,7 @@ struct TruthFrame {
 
 // The truth at every pixel centre: a ray from the eye finds the visible
 // point and its interpolated normal, then `count` rays find its occlusion.
-TruthFrame truth_frame(const RayTracedAo& rays, const perspective::Camera& camera, int width,
+TruthFrame truth_frame(const RayTracedAo& rays, const pipeline::Camera& camera, int width,
                        int height, double radius, int count);
 
 // How far a method's occlusion is from the truth, over the pixels where

@@ -26,7 +26,7 @@ using namespace antialiasing;
 
 struct Setup {
     const std::vector<normal_mapping::MappedModel>* models;
-    const perspective::Camera* camera;
+    const pipeline::Camera* camera;
     const shadows::ShadowOptions* shadow;
     int size;
 };
@@ -69,9 +69,9 @@ int main(int argc, char** argv) {
         const int size = options.quick ? 96 : 800;
         const int motion_size = options.quick ? 64 : 400;
         const int truth_side = options.quick ? 4 : 16;
-        const perspective::ViewOptions view;  // the program's default view, framed
-        const perspective::Camera camera =
-            perspective::resolve_camera(view, shadows::scene_box(models), 1);
+        const pipeline::ViewOptions view;  // the program's default view, framed
+        const pipeline::Camera camera =
+            pipeline::resolve_camera(view, shadows::scene_box(models), 1);
         shadows::ShadowOptions shadow;
         shadows::set_lights(shadow, view, false);
         const Setup setup{&models, &camera, &shadow, size};

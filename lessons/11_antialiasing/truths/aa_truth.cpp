@@ -10,7 +10,7 @@ namespace antialiasing {
 
 // [doc:truth]
 rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& models,
-                               const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                               const pipeline::Camera& camera, const shadows::ShadowOptions& shadow,
                                int width, int height, int side, const AaOptions& tone) {
     if (side < 4 || side % 4 != 0)
         throw std::invalid_argument("the truth's grid side must be a multiple of 4");
@@ -58,7 +58,7 @@ rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& m
 // [/doc:truth]
 
 rl::Grid<std::uint8_t> depth_edges(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera,
+                                   const pipeline::Camera& camera,
                                    const shadows::ShadowOptions& shadow, int width, int height) {
     const SampleTarget frame = draw_samples(models, camera, shadow, Method::none, {{0, 0}},
                                             ShadeAt::centre, width, height);

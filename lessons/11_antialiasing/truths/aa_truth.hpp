@@ -18,14 +18,14 @@ namespace antialiasing {
 // pattern and samples are not used), each sample before the mean or the
 // mean after, so that a method is scored against the truth of its own order.
 rl::Grid<rl::vec3> truth_light(const std::vector<normal_mapping::MappedModel>& models,
-                               const perspective::Camera& camera, const shadows::ShadowOptions& shadow,
+                               const pipeline::Camera& camera, const shadows::ShadowOptions& shadow,
                                int width, int height, int side = 16, const AaOptions& tone = {});
 
 // The pixels within one pixel of a depth edge: a neighbour (of 8) whose
 // view depth differs from the pixel's by more than 2%, or where no model
 // is beside a pixel where one is. From a frame of one sample a pixel.
 rl::Grid<std::uint8_t> depth_edges(const std::vector<normal_mapping::MappedModel>& models,
-                                   const perspective::Camera& camera,
+                                   const pipeline::Camera& camera,
                                    const shadows::ShadowOptions& shadow, int width, int height);
 
 // The mean difference from the truth, per channel of the sRGB picture (what

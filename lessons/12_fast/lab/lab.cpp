@@ -61,14 +61,14 @@ constexpr int kThreads = 2;       // this machine's cores: ours and llvmpipe's
 struct Scene {
     std::string name;
     std::vector<MappedModel> models;
-    perspective::Camera camera;
+    pipeline::Camera camera;
 };
 
-perspective::Camera framed(const std::vector<MappedModel>& models) {
-    perspective::Box box;
+pipeline::Camera framed(const std::vector<MappedModel>& models) {
+    pipeline::Box box;
     for (const MappedModel& m : models)
-        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
-    return perspective::resolve_camera({}, box, 1.0f);  // what the programs frame
+        box.add(pipeline::bounds(m.lit.model.mesh, m.lit.model.transform));
+    return pipeline::resolve_camera({}, box, 1.0f);  // what the programs frame
 }
 
 // A sphere the globe's size with the globe's maps and `segments` around
@@ -77,7 +77,7 @@ MappedModel sphere_with_globe_maps(const MappedModel& globe, int segments) {
     MappedModel m{globe.lit, {}, globe.maps};
     m.lit.model.mesh = shading::uv_sphere(segments);
     m.lit.model.mesh.source = globe.lit.model.mesh.source;
-    m.lit.model.box = perspective::bounds(m.lit.model.mesh, rl::mat4::identity());
+    m.lit.model.box = pipeline::bounds(m.lit.model.mesh, rl::mat4::identity());
     m.lit.normals = shading::corner_normals(m.lit.model.mesh, shading::Weighting::angle);
     m.tangents = normal_mapping::corner_tangents(m.lit.model.mesh, m.lit.normals,
                                                  normal_mapping::TangentMethod::split);
@@ -85,8 +85,8 @@ MappedModel sphere_with_globe_maps(const MappedModel& globe, int segments) {
 }
 
 // The unit globe seen so that it touches the top and bottom of the frame.
-perspective::Camera filling_the_frame() {
-    perspective::Camera c;
+pipeline::Camera filling_the_frame() {
+    pipeline::Camera c;
     c.fov_y = 50;
     const float distance = 1.0f / std::sin(rl::radians(c.fov_y / 2));
     c.eye = rl::vec3{0.3f, 0.35f, 1.0f} * (distance / rl::length(rl::vec3{0.3f, 0.35f, 1.0f}));
@@ -128,7 +128,7 @@ void time_fast(benchmark::State& state, const Cell* c) {
 }
 
 void time_lesson07(benchmark::State& state, const Cell* c) {
-    perspective::ColourTarget target = perspective::colour_target(c->size, c->size);
+    pipeline::ColourTarget target = pipeline::colour_target(c->size, c->size);
     int frame = 0;
     for (auto _ : state) {
         target.clear(rl::kBackground);
@@ -229,7 +229,7 @@ void time_pair(benchmark::State& state, Pair* p) {
     p->ms_off.clear(), p->ms_on.clear(), p->ratio.clear();
     for (auto _ : state)
         for (int f = 0; f < p->frames; ++f) {
-            const perspective::Camera camera =
+            const pipeline::Camera camera =
                 fast::orbit(p->scene->camera, f % kOrbitFrames, kOrbitFrames);
             double ms[2];
             for (int k = 0; k < 2; ++k) {
@@ -261,7 +261,7 @@ rl::Image fast_frame(const Scene& s, int size, const fast::FastOptions& o, std::
 }
 
 rl::Image lesson07_frame(const Scene& s, int size, const normal_mapping::RenderOptions& o) {
-    perspective::ColourTarget target = perspective::colour_target(size, size);
+    pipeline::ColourTarget target = pipeline::colour_target(size, size);
     normal_mapping::render(s.models, s.camera, o, target);
     return target.colour();
 }

@@ -293,11 +293,11 @@ void LlvmpipePeer::upload(const std::vector<normal_mapping::MappedModel>& models
     glFinish();
 }
 
-double LlvmpipePeer::render(const perspective::Camera& camera) {
+double LlvmpipePeer::render(const pipeline::Camera& camera) {
     Impl& s = *impl_;
     const auto start = std::chrono::steady_clock::now();
     const float aspect = static_cast<float>(s.width) / static_cast<float>(s.height);
-    const rl::mat4 view_projection = perspective::view_projection(camera, aspect);
+    const rl::mat4 view_projection = pipeline::view_projection(camera, aspect);
     const rl::Rgba b = rl::kBackground;
     glClearColor(b.r / 255.0f, b.g / 255.0f, b.b / 255.0f, 1.0f);
     glClearDepth(1.0);
@@ -328,7 +328,7 @@ double LlvmpipePeer::render(const perspective::Camera& camera) {
         if (!g.normal_matrix) continue;
         const rl::mat4& model = g.source->lit.model.transform;
         const rl::mat4 mvp = view_projection * model;
-        if (s.options.cull_objects && perspective::outside_frustum(g.source->lit.model.box, mvp))
+        if (s.options.cull_objects && pipeline::outside_frustum(g.source->lit.model.box, mvp))
             continue;
         // rl matrices are row-major: GL_TRUE transposes them into GL's order.
         glUniformMatrix4fv(s.location("model_view_projection"), 1, GL_TRUE, &mvp[0][0]);

@@ -38,7 +38,7 @@ class LlvmpipePeer : public Peer {
     void upload(const std::vector<normal_mapping::MappedModel>& models,
                 const normal_mapping::RenderOptions& options) override;
     // Draws one frame and waits for it (glFinish); returns its milliseconds.
-    double render(const perspective::Camera& camera) override;
+    double render(const pipeline::Camera& camera) override;
     rl::Image frame() const override;      // the last frame, bottom row first
     std::string version() const override;  // GL_VERSION and GL_RENDERER
 

@@ -28,7 +28,7 @@ class Peer {
     virtual void upload(const std::vector<normal_mapping::MappedModel>& models,
                         const normal_mapping::RenderOptions& options) = 0;
     // Draws one frame and waits for it; returns its milliseconds.
-    virtual double render(const perspective::Camera& camera) = 0;
+    virtual double render(const pipeline::Camera& camera) = 0;
     virtual rl::Image frame() const = 0;      // the last frame, bottom row first
     virtual std::string version() const = 0;  // what the peer says it is
 };

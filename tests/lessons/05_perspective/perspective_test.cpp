@@ -12,7 +12,7 @@
 
 namespace {
 
-using namespace perspective;
+using namespace pipeline;
 
 Camera looking_down_minus_z() {
     Camera camera;
@@ -271,7 +271,7 @@ double largest_uv_error(Interpolation interpolation, double* largest_derivative_
         {{{-2, -1, -1}, {2, -1, -1}, {0, -1, -12}}, {{0, 0}, {1, 0}, {0.5, 1}}}};
     const int width = 160, height = 120;
     const RayCamera rays(camera, width, height);
-    perspective::ColourTarget frame = perspective::colour_target(width, height);
+    pipeline::ColourTarget frame = pipeline::colour_target(width, height);
     PipelineOptions options;
     options.interpolation = interpolation;
     double worst = 0, worst_derivative = 0;
@@ -384,14 +384,14 @@ TEST(PerspectiveTest, CameraInsideAMeshDrawsItsInsideAsBackFaces) {
     camera.eye = {1.0f, 0.9f, -0.6f};  // the globe's centre
     camera.target = {0, 0.9f, 3};
     fit_depth_range(camera, scene_bounds(models));
-    perspective::ColourTarget frame = perspective::colour_target(64, 64);
+    pipeline::ColourTarget frame = pipeline::colour_target(64, 64);
     const PipelineCounts counts = render(models, camera, {}, frame);
     EXPECT_EQ(counts.refused, 0u);
     EXPECT_GT(counts.clipped, 0u);
     EXPECT_GT(counts.shaded, 0u);
     // From inside, every face of the globe is a back face: alone, it draws nothing.
     const std::vector<TexturedModel> globe(models.end() - 1, models.end());
-    perspective::ColourTarget inside = perspective::colour_target(64, 64);
+    pipeline::ColourTarget inside = pipeline::colour_target(64, 64);
     const PipelineCounts g = render(globe, camera, {}, inside);
     EXPECT_EQ(g.culled, g.faces);
     EXPECT_GT(g.faces, 0u);
@@ -411,7 +411,7 @@ double share_differing_from_origin(float offset) {
                                     rl::compose({.translation = {at, -at, at}}), warnings));
         const Camera camera = frame_box(scene_bounds(models), 50, 1);
         check(camera);
-        perspective::ColourTarget frame = perspective::colour_target(128, 128);
+        pipeline::ColourTarget frame = pipeline::colour_target(128, 128);
         const PipelineCounts counts = render(models, camera, {}, frame);
         EXPECT_EQ(counts.refused, 0u);
         return frame.colour();
@@ -439,7 +439,7 @@ TEST(PerspectiveTest, HugeModelIsDrawnUntilItsMatricesOverflowAFloat) {
     const std::vector<TexturedModel> big = scene_at_scale(1e15f);
     const Camera camera = frame_box(scene_bounds(big), 50, 1);
     ASSERT_NO_THROW(check(camera));
-    perspective::ColourTarget frame = perspective::colour_target(64, 64);
+    pipeline::ColourTarget frame = pipeline::colour_target(64, 64);
     const PipelineCounts counts = render(big, camera, {}, frame);
     EXPECT_EQ(counts.refused, 0u);
     EXPECT_GT(counts.shaded, 300u);
@@ -492,7 +492,7 @@ TEST(PerspectiveTest, TinyModelIsFramedAndDrawnLikeAUnitOne) {
         const std::vector<TexturedModel> models = crate_at_scale(scale);
         const Camera camera = frame_box(scene_bounds(models), 50, 1);
         check(camera);
-        perspective::ColourTarget frame = perspective::colour_target(64, 64);
+        pipeline::ColourTarget frame = pipeline::colour_target(64, 64);
         render(models, camera, {}, frame);
         return frame.colour();
     };

@@ -14,7 +14,7 @@
 
 namespace {
 
-using namespace perspective;
+using namespace pipeline;
 
 // Triangles given directly in clip space, as the pipeline's geometry.
 struct ClipCorner {

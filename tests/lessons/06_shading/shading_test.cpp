@@ -118,8 +118,8 @@ TEST(ShadingTest, NormalMatrixKeepsNormalsPerpendicularUnderNonUniformScale) {
 }
 
 // A camera 4 units up the z axis, looking at the unit sphere at the origin.
-perspective::Camera camera_on_z_axis() {
-    perspective::Camera camera;
+pipeline::Camera camera_on_z_axis() {
+    pipeline::Camera camera;
     camera.eye = {0, 0, 4};
     camera.near = 1;
     camera.far = 10;
@@ -133,16 +133,16 @@ TEST(ShadingTest, NormalsStillPointOutUnderNegativeScale) {
     // so front faces are still drawn and the lit side still faces the light.
     const rl::Mesh sphere = uv_sphere(32);
     const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
-    const perspective::Camera camera = camera_on_z_axis();
-    const rl::mat4 mvp = perspective::view_projection(camera, 1.0f) * mirror;
+    const pipeline::Camera camera = camera_on_z_axis();
+    const rl::mat4 mvp = pipeline::view_projection(camera, 1.0f) * mirror;
     Uniforms u{.model_matrix = mirror,
                .normal_matrix = *normal_matrix(mirror),
                .model_view_projection = mvp,
                .eye = camera.eye,
                .lighting = default_lighting(rl::vec3{1, 0, 0.3f})};
     u.lighting.lights.resize(1);
-    perspective::ColourTarget frame = perspective::colour_target(64, 64);
-    const perspective::PipelineCounts counts = draw_model(
+    pipeline::ColourTarget frame = pipeline::colour_target(64, 64);
+    const pipeline::PipelineCounts counts = draw_model(
         ShadingModel::blinn_phong, Surface(sphere, normals, mirror), u, frame, {}, Output::srgb);
     EXPECT_GT(counts.shaded, 1000u);
     // Lit from +x: the right half is brighter than the left.
@@ -156,17 +156,17 @@ TEST(ShadingTest, AModelWithoutATextureIsDrawnInItsColour) {
     // specular, seen from the light: the nearest point's light is the albedo.
     const rl::Mesh sphere = uv_sphere(64);
     const std::vector<rl::vec3> normals = corner_normals(sphere, Weighting::angle);
-    const perspective::Camera camera = camera_on_z_axis();
+    const pipeline::Camera camera = camera_on_z_axis();
     Lighting<float> lighting;
     lighting.lights.push_back({{0, 0, 1}, {1, 1, 1}});
     lighting.ambient = {};
     lighting.specular = {};
     const Uniforms u{.model_matrix = rl::mat4::identity(),
                      .normal_matrix = rl::mat3::identity(),
-                     .model_view_projection = perspective::view_projection(camera, 1.0f),
+                     .model_view_projection = pipeline::view_projection(camera, 1.0f),
                      .eye = camera.eye,
                      .lighting = lighting};
-    perspective::ColourTarget frame = perspective::colour_target(65, 65);
+    pipeline::ColourTarget frame = pipeline::colour_target(65, 65);
     draw_model(ShadingModel::phong, Surface(sphere, normals), u, frame, {}, Output::srgb);
     const rl::Rgba centre = frame.colour().get(32, 32);
     const double grey = 255.0 * linear_to_srgb(0.8);
@@ -191,7 +191,7 @@ TEST(ShadingTest, InterpolatedNormalsAreRenormalised) {
                .lighting = lighting,
                .colour = {1, 1, 1}};
     const PhongShader shader{u, Specular::blinn_phong};
-    const perspective::TriangleSetup<PhongShader::Varyings> setup{};
+    const pipeline::TriangleSetup<PhongShader::Varyings> setup{};
     const PhongShader::Varyings halfway{
         {0, 0, 0}, rl::vec3{1, 0, 0} * 0.5f + rl::vec3{0, 1, 0} * 0.5f, {}};
     const rl::vec3 c = shader.fragment({0, 0, 0.5f, halfway, 1.0f, &setup});
@@ -262,10 +262,10 @@ struct DiscardEverything {
     rl::mat4 mvp;
     using Varyings = float;
     static constexpr bool may_discard = true;
-    perspective::ClipVertex<float> vertex(const SurfaceCorner& in) const {
-        return {perspective::clip_position(mvp, in.position()), 0.0f};
+    pipeline::ClipVertex<float> vertex(const SurfaceCorner& in) const {
+        return {pipeline::clip_position(mvp, in.position()), 0.0f};
     }
-    std::optional<rl::vec3> fragment(const perspective::Fragment<float>&) const {
+    std::optional<rl::vec3> fragment(const pipeline::Fragment<float>&) const {
         return std::nullopt;
     }
 };
@@ -276,17 +276,17 @@ TEST(ShadingTest, DiscardedPixelsLeaveTheDepthBufferAlone) {
     const rl::mat4 near = rl::compose({.translation = {0, 0, 0.5f}});
     const rl::mat4 far = rl::compose({.translation = {0, 0, -0.5f}});
     const rl::mat4 ortho = rl::mat4::identity();
-    perspective::ColourTarget frame = perspective::colour_target(16, 16);
+    pipeline::ColourTarget frame = pipeline::colour_target(16, 16);
     const Surface surface{quad, normals};
     draw(surface, DiscardEverything{ortho * near}, frame, {}, Output::naive);
-    const perspective::PipelineCounts counts =
+    const pipeline::PipelineCounts counts =
         draw(surface, UnlitShader{ortho * far, {1, 0, 0}}, frame, {}, Output::naive);
     EXPECT_EQ(counts.shaded, 256u);
     EXPECT_EQ(frame.colour().get(8, 8).r, 255);
 }
 
 TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
-    perspective::Camera camera;
+    pipeline::Camera camera;
     camera.eye = {0, 0, 3.2f};
     camera.fov_y = 45;
     camera.near = 1;
@@ -301,7 +301,7 @@ TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
     for (Output o : kOutputs) {
         Uniforms u{rl::mat4::identity(),
                    rl::mat3::identity(),
-                   perspective::view_projection(camera, 1.0f),
+                   pipeline::view_projection(camera, 1.0f),
                    camera.eye,
                    lighting,
                    nullptr,
@@ -310,7 +310,7 @@ TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
         if (o == Output::naive)
             u.colour = {linear_to_srgb(albedo.x), linear_to_srgb(albedo.y),
                         linear_to_srgb(albedo.z)};
-        perspective::ColourTarget frame = perspective::colour_target(96, 96);
+        pipeline::ColourTarget frame = pipeline::colour_target(96, 96);
         draw_model(ShadingModel::blinn_phong, Surface{sphere, normals}, u, frame, {}, o);
         error[o == Output::srgb ? 0 : 1] =
             compare_spheres(truth, frame.colour(), rl::kBackground).interior_rmse;
@@ -322,10 +322,10 @@ TEST(ShadingTest, LinearLightIsCloserToTheTruthThanNaiveBytes) {
 TEST(ShadingTest, DefaultSceneTileByTileEqualsOneDraw) {
     std::vector<std::string> warnings;
     const std::vector<LitModel> models = default_scene(Output::srgb, Weighting::angle, warnings);
-    perspective::Box box;
-    for (const LitModel& m : models) box.add(perspective::bounds(m.model.mesh, m.model.transform));
-    const perspective::Camera camera = perspective::resolve_camera({}, box, 1.5f);
-    EXPECT_TRUE(perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
+    pipeline::Box box;
+    for (const LitModel& m : models) box.add(pipeline::bounds(m.model.mesh, m.model.transform));
+    const pipeline::Camera camera = pipeline::resolve_camera({}, box, 1.5f);
+    EXPECT_TRUE(pipeline::tiles_add_up(300, 200, 64, [&](pipeline::ColourTarget& frame, auto tile) {
         ShadingOptions options;
         options.pipeline.tile = tile;
         render(models, camera, options, frame);

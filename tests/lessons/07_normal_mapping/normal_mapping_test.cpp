@@ -94,7 +94,7 @@ TEST(NormalMappingTest, TheShadersTangentAndObjectSpaceNormalsAgreeOnTheGlobe) {
     object.source = NormalMap::object;
     tangent.map_filter = object.map_filter = textures::Filter::bilinear;
     double sum = 0;
-    perspective::Fragment<NormalMappedShader::Varyings> f{};
+    pipeline::Fragment<NormalMappedShader::Varyings> f{};
     const std::size_t faces = globe.lit.model.mesh.faces.size();
     for (std::size_t i = 0; i < faces; ++i) {
         f.varyings = face_centre(globe, i);
@@ -299,7 +299,7 @@ TEST(NormalMappingTest, AMapNormalTooShortToHoldADirectionKeepsTheInterpolatedNo
     maps.object_normals = textures::MipChain(checker);
     const shading::Uniforms u = identity_uniforms();
     const std::vector<rl::vec4> tangents(3, rl::vec4{1, 0, 0, 1});
-    perspective::Fragment<NormalMappedShader::Varyings> f{};
+    pipeline::Fragment<NormalMappedShader::Varyings> f{};
     f.varyings = {{0, 0, 0}, {0, 0.6f, 0.8f}, {1, 0, 0}, 1, {0.5f, 0.5f}};  // between the 4 texels
     for (NormalMap source : {NormalMap::tangent, NormalMap::object}) {
         NormalMappedShader shader{u, maps, source, shading::Specular::blinn_phong, 1.0f, &tangents};
@@ -313,11 +313,11 @@ TEST(NormalMappingTest, AMapNormalTooShortToHoldADirectionKeepsTheInterpolatedNo
 TEST(NormalMappingTest, DefaultSceneTileByTileEqualsOneDraw) {
     std::vector<std::string> warnings;
     const std::vector<MappedModel> models = default_scene(TangentMethod::split, warnings);
-    perspective::Box box;
+    pipeline::Box box;
     for (const MappedModel& m : models)
-        box.add(perspective::bounds(m.lit.model.mesh, m.lit.model.transform));
-    const perspective::Camera camera = perspective::resolve_camera({}, box, 1.5f);
-    EXPECT_TRUE(perspective::tiles_add_up(300, 200, 64, [&](perspective::ColourTarget& frame, auto tile) {
+        box.add(pipeline::bounds(m.lit.model.mesh, m.lit.model.transform));
+    const pipeline::Camera camera = pipeline::resolve_camera({}, box, 1.5f);
+    EXPECT_TRUE(pipeline::tiles_add_up(300, 200, 64, [&](pipeline::ColourTarget& frame, auto tile) {
         RenderOptions options;
         options.pipeline.tile = tile;
         render(models, camera, options, frame);

@@ -76,7 +76,7 @@ TEST(ShadowsTest, OrthographicSendsItsBoxToTheCube) {
 // (0.6, 0.25, -1.1) lands at u = 2.8, v = 1.8 (texel (2, 1)) at depth 0.75;
 // a plate at height 0.5 stored 0.5 there, so the point is in shadow.
 TEST(ShadowsTest, TheWorkedExampleOfThePage) {
-    perspective::Box box;
+    pipeline::Box box;
     box.add(rl::vec3{-2, 0, -2});
     box.add(rl::vec3{2, 1, 2});
     ShadowMap map;
@@ -95,7 +95,7 @@ TEST(ShadowsTest, TheWorkedExampleOfThePage) {
 
 // Every corner of the covered box lands inside the light's clip volume.
 TEST(ShadowsTest, TheLightsViewHoldsTheWholeBox) {
-    perspective::Box box;
+    pipeline::Box box;
     box.add(rl::vec3{-1, 0, -2});
     box.add(rl::vec3{3, 1, 2});
     for (const ShadowLight& light :
@@ -160,7 +160,7 @@ TEST(ShadowsTest, ABackFaceMapLosesSingleSidedCasters) {
     scene.push_back(model("floor", {.translation = {0, 0.1f, 0}, .scale = {0.5f, 0.5f, 0.5f}}));
     const rl::vec3 light{-1, 1, 0};
     const ShadowMap front = map_of(scene, light, {.size = 512});
-    const ShadowMap back = map_of(scene, light, {.size = 512, .cull = perspective::Cull::front});
+    const ShadowMap back = map_of(scene, light, {.size = 512, .cull = pipeline::Cull::front});
     EXPECT_EQ(floor_shadow(front, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 0.0);
     EXPECT_EQ(floor_shadow(back, {}, -0.2f, 0.4f, -0.3f, 0.3f).mean_light, 1.0);
 }
@@ -251,7 +251,7 @@ TEST(ShadowsTest, ACasterThinnerThanATexelLosesItsShadow) {
     const auto corner = [](int i) { return rl::Corner{i, 0, 0}; };
     mesh.faces = {{{corner(0), corner(1), corner(2)}, 0}, {{corner(0), corner(2), corner(3)}, 0}};
     sliver.lit.normals = shading::corner_normals(mesh, shading::Weighting::angle);
-    sliver.lit.model.box = perspective::bounds(mesh, rl::mat4::identity());
+    sliver.lit.model.box = pipeline::bounds(mesh, rl::mat4::identity());
     sliver.tangents = normal_mapping::corner_tangents(mesh, sliver.lit.normals,
                                                       normal_mapping::TangentMethod::split);
     scene.push_back(std::move(sliver));
@@ -267,13 +267,13 @@ TEST(ShadowsTest, ACasterThinnerThanATexelLosesItsShadow) {
 // An empty scene renders (its map holds nothing), and a zero light direction is refused.
 TEST(ShadowsTest, AnEmptySceneHasAnEmptyMapAndAZeroLightIsRefused) {
     const std::vector<MappedModel> none;
-    perspective::Camera camera;
+    pipeline::Camera camera;
     ShadowOptions options;
     const ShadowMap map = shadow_map_for(none, camera, 1, options);
     for (float d : map.depth.pixels()) ASSERT_EQ(d, 1.0f);
-    perspective::ColourTarget frame = perspective::colour_target(16, 16);
+    pipeline::ColourTarget frame = pipeline::colour_target(16, 16);
     EXPECT_EQ(render(none, camera, options, map, frame).shaded, 0u);
-    perspective::Box box;
+    pipeline::Box box;
     box.add(rl::vec3{0, 0, 0});
     EXPECT_THROW(light_view({LightType::directional, {0, 0, 0}}, box), std::invalid_argument);
     EXPECT_THROW(light_view({LightType::directional, {INFINITY, 1, 0}}, box),
@@ -287,15 +287,15 @@ TEST(ShadowsTest, AnEmptySceneHasAnEmptyMapAndAZeroLightIsRefused) {
 // Fitting to the view gives the map a smaller box than the scene's when the
 // camera sees part of it, and never a larger one.
 TEST(ShadowsTest, FittingToTheViewCoversNoMoreThanTheScene) {
-    perspective::Box scene;
+    pipeline::Box scene;
     scene.add(rl::vec3{-10, 0, -10});
     scene.add(rl::vec3{10, 1, 10});
-    perspective::Camera camera;
+    pipeline::Camera camera;
     camera.eye = {0, 1, 8};
     camera.target = {0, 0, 5};
     camera.near = 0.1f;
     camera.far = 6;
-    const perspective::Box seen = visible_box(camera, 1, scene);
+    const pipeline::Box seen = visible_box(camera, 1, scene);
     ASSERT_FALSE(seen.empty());
     EXPECT_GE(seen.min.x, scene.min.x);
     EXPECT_LE(seen.max.z, scene.max.z);
@@ -309,14 +309,14 @@ TEST(ShadowsTest, FittingToTheViewCoversNoMoreThanTheScene) {
 // view fit shadows those points as the scene fit does.
 TEST(ShadowsTest, FittingToTheViewKeepsCastersOutsideTheView) {
     const std::vector<MappedModel> models = floor_scene(true);
-    perspective::Camera camera;
+    pipeline::Camera camera;
     camera.eye = {-0.2f, 0.3f, -0.8f};
     camera.target = {-0.2f, 0, -1.6f};
     camera.near = 0.05f;
     camera.far = 2;
     ShadowOptions options;
     options.light.direction = rl::normalize(rl::vec3{0.3f, 0.5f, 1.0f});
-    const perspective::Box seen = visible_box(camera, 1, scene_box(models));
+    const pipeline::Box seen = visible_box(camera, 1, scene_box(models));
     ASSERT_LT(seen.max.z, -0.55f) << "the crate must be outside the view for this test";
     options.fit = Fit::view;
     const ShadowMap view_map = shadow_map_for(models, camera, 1, options);
@@ -337,7 +337,7 @@ TEST(ShadowsTest, FittingToTheViewKeepsCastersOutsideTheView) {
 // right by a key light and lesson 07's fill light.
 struct LitFloor {
     std::vector<MappedModel> models = floor_scene(true);
-    perspective::Camera camera{
+    pipeline::Camera camera{
         .eye = {2.5f, 3.0f, 3.5f}, .target = {0, 0, 0}, .near = 0.5f, .far = 20};
     ShadowOptions options;
     LitFloor() {
@@ -349,15 +349,15 @@ struct LitFloor {
 TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
     LitFloor scene;
     const std::vector<MappedModel>& models = scene.models;
-    const perspective::Camera& camera = scene.camera;
+    const pipeline::Camera& camera = scene.camera;
     ShadowOptions& options = scene.options;
     ASSERT_GE(options.render.lighting.lights.size(), 2u) << "the test wants a fill light too";
     const ShadowMap map = shadow_map_for(models, camera, 1, options);
-    perspective::ColourTarget shadowed = perspective::colour_target(96, 96);
+    pipeline::ColourTarget shadowed = pipeline::colour_target(96, 96);
     render(models, camera, options, map, shadowed);
     normal_mapping::RenderOptions without_key = options.render;
     without_key.lighting.lights.erase(without_key.lighting.lights.begin());
-    perspective::ColourTarget unlit = perspective::colour_target(96, 96);
+    pipeline::ColourTarget unlit = pipeline::colour_target(96, 96);
     normal_mapping::render(models, camera, without_key, unlit);
     int in_shadow = 0, darker = 0;
     for (int y = 0; y < 96; ++y)
@@ -377,13 +377,13 @@ TEST(ShadowsTest, AShadowDarkensTheKeyLightOnly) {
 TEST(ShadowsTest, WithoutCastersTheImageIsLessonSevens) {
     LitFloor scene;
     const std::vector<MappedModel>& models = scene.models;
-    const perspective::Camera& camera = scene.camera;
+    const pipeline::Camera& camera = scene.camera;
     ShadowOptions& options = scene.options;
     options.casters = false;
     const ShadowMap map = shadow_map_for(models, camera, 1, options);
-    perspective::ColourTarget unshadowed = perspective::colour_target(96, 96);
+    pipeline::ColourTarget unshadowed = pipeline::colour_target(96, 96);
     render(models, camera, options, map, unshadowed);
-    perspective::ColourTarget lesson07 = perspective::colour_target(96, 96);
+    pipeline::ColourTarget lesson07 = pipeline::colour_target(96, 96);
     normal_mapping::render(models, camera, options.render, lesson07);
     int differing = 0, drawn = 0;
     for (int y = 0; y < 96; ++y)
@@ -396,7 +396,7 @@ TEST(ShadowsTest, WithoutCastersTheImageIsLessonSevens) {
     EXPECT_EQ(differing, 0);
     EXPECT_GT(drawn, 96 * 96 / 4);
     options.casters = true;  // and with them the crate shadows the floor
-    perspective::ColourTarget shadowed = perspective::colour_target(96, 96);
+    pipeline::ColourTarget shadowed = pipeline::colour_target(96, 96);
     render(models, camera, options, shadow_map_for(models, camera, 1, options), shadowed);
     EXPECT_NE(shadowed.colour(), unshadowed.colour());
 }
@@ -413,7 +413,7 @@ TEST(ShadowsTest, TheShadowPassRefusesMoreWorkThanItsCap) {
     try {
         map_of(floor, {0, 1, 0}, options);
         ADD_FAILURE() << "a pass over its cap was drawn";
-    } catch (const perspective::OverdrawError& e) {
+    } catch (const pipeline::OverdrawError& e) {
         EXPECT_NE(std::string(e.what()).find("shadow map's pass"), std::string::npos) << e.what();
         EXPECT_NE(
             std::string(e.what()).find("3.28e+04 texels, the cap (0.5 layers of this 256x256"),
@@ -434,7 +434,7 @@ TEST(ShadowsTest, APassOverItsCapIsRefusedBeforeAnyOfItIsDrawn) {
     options.max_samples = 0.5 * 256 * 256;
     g_checkpoints = 0;
     rl::set_checkpoint_hook(count_checkpoint);
-    EXPECT_THROW(map_of(floor, {0, 1, 0}, options), perspective::OverdrawError);
+    EXPECT_THROW(map_of(floor, {0, 1, 0}, options), pipeline::OverdrawError);
     const int drawing_refused = g_checkpoints;
     options.max_samples = kMaxShadowPassSamples;
     map_of(floor, {0, 1, 0}, options);

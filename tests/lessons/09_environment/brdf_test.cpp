@@ -126,7 +126,7 @@ TEST(Brdf, TheWhiteFurnaceHoldsForEveryRoughness) {
 TEST(Brdf, TheWhiteFurnaceRenderVanishes) {
     std::vector<std::string> warnings;
     const auto scene =
-        load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split, 64, 48, warnings);
+        load_scene(pipeline::ViewOptions{}, normal_mapping::TangentMethod::split, 64, 48, warnings);
     const Environment white = constant({1, 1, 1});
     for (float roughness : {0.0f, 0.3f, 0.7f, 1.0f})
         for (Glossy method : kGlossies)
@@ -272,7 +272,7 @@ TEST(GlossyMap, ASunTenToTheFiveTimesTheSkyStaysFinite) {
     }
     std::vector<std::string> warnings;
     const auto scene =
-        load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split, 48, 36, warnings);
+        load_scene(pipeline::ViewOptions{}, normal_mapping::TangentMethod::split, 48, 36, warnings);
     for (Glossy method : kGlossies) {
         RenderOptions options;
         options.material = Material::plastic;
@@ -301,7 +301,7 @@ TEST(GlossyShader, ReadingAlongTheLeanIsCloserToTheReference) {
     using namespace environment;
     std::vector<std::string> warnings;
     const auto scene =
-        load_scene(perspective::ViewOptions{}, normal_mapping::TangentMethod::split, 64, 48, warnings);
+        load_scene(pipeline::ViewOptions{}, normal_mapping::TangentMethod::split, 64, 48, warnings);
     // No sun: Monte Carlo's reference converges (a 2-degree sun 400 times
     // the sky leaves any few thousand rays speckled).
     Sky sunless = default_sky();

@@ -96,12 +96,12 @@ TEST(ToneMap, ABytesFrameBandsTheDarkAndCutsAtOne) {
 // The ray through a pixel goes where the camera's projection sends it: a
 // point along it projects back onto that pixel's centre.
 TEST(Skybox, ThePixelRayIsTheProjectionsInverse) {
-    perspective::Camera camera;
+    pipeline::Camera camera;
     camera.eye = {0.3f, 0.35f, 3.8f};
     camera.target = {0.1f, -0.2f, 0};
     camera.fov_y = 50;
     const int width = 160, height = 90;
-    const rl::mat4 vp = perspective::view_projection(camera, float(width) / height);
+    const rl::mat4 vp = pipeline::view_projection(camera, float(width) / height);
     for (auto [x, y] : {std::pair{0.5f, 0.5f}, {80.0f, 45.0f}, {159.5f, 10.5f}, {33.5f, 89.5f}}) {
         const rl::vec3 p = camera.eye + pixel_ray(camera, width, height, x, y) * 5.0f;
         const rl::vec4 clip = vp * rl::vec4{p.x, p.y, p.z, 1};
@@ -115,7 +115,7 @@ TEST(Skybox, ThePixelRayIsTheProjectionsInverse) {
 TEST(Skybox, FillsOnlyWhatTheModelsLeft) {
     std::vector<std::string> warnings;
     const Environment env = make_environment({.size = 16}, warnings);
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     const auto scene = load_scene(view, normal_mapping::TangentMethod::split, 64, 48, warnings);
     LightTarget frame = light_target(64, 48);
     RenderOptions options;
@@ -146,13 +146,13 @@ TEST(Skybox, FillsOnlyWhatTheModelsLeft) {
 // an ambient term of 1 (which is albedo times 1), to a level.
 TEST(Diffuse, TheWhiteFurnaceGivesBackTheAlbedo) {
     std::vector<std::string> warnings;
-    perspective::ViewOptions view;
+    pipeline::ViewOptions view;
     const auto scene = load_scene(view, normal_mapping::TangentMethod::split, 64, 48, warnings);
     normal_mapping::RenderOptions ambient_only;
     ambient_only.lighting.lights.clear();
     ambient_only.lighting.ambient = {1, 1, 1};
     ambient_only.lighting.specular = {0, 0, 0};
-    perspective::ColourTarget lesson07 = perspective::colour_target(64, 48, rl::Rgba{0, 0, 0, 255});
+    pipeline::ColourTarget lesson07 = pipeline::colour_target(64, 48, rl::Rgba{0, 0, 0, 255});
     normal_mapping::render(scene.models, scene.camera, ambient_only, lesson07);
     const Environment white(cube_map(
                                 [](rl::dvec3) {

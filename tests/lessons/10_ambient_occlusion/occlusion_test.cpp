@@ -37,8 +37,8 @@ MappedModel wall_at(float d, float s) {
         {.translation = {d, s, 0}, .rotation = rl::axis_angle({0, 0, 1}, 90), .scale = {s, s, s}});
 }
 
-perspective::Camera camera_at(rl::vec3 eye, rl::vec3 target) {
-    perspective::Camera c;
+pipeline::Camera camera_at(rl::vec3 eye, rl::vec3 target) {
+    pipeline::Camera c;
     c.eye = eye, c.target = target, c.fov_y = 50, c.near = 0.1f, c.far = 100;
     return c;
 }
@@ -48,10 +48,10 @@ struct Rendered {
     Screen screen;
 };
 
-Rendered gbuffer_of(const std::vector<MappedModel>& models, const perspective::Camera& camera,
+Rendered gbuffer_of(const std::vector<MappedModel>& models, const pipeline::Camera& camera,
                     int size) {
     shadows::ShadowOptions options;
-    shadows::set_lights(options, perspective::ViewOptions{}, false);
+    shadows::set_lights(options, pipeline::ViewOptions{}, false);
     const shadows::ShadowMap map = shadows::shadow_map_for(models, camera, 1, options);
     return {render_gbuffer(models, camera, options, map, size, size), Screen(camera, size, size)};
 }
@@ -156,7 +156,7 @@ TEST(EnvironmentLight, AWhiteSkyGivesAlbedoTimesTheOcclusion) {
     options.environment = &white.light();
     const std::vector<MappedModel> scene = {
         floor_of(2), model("globe", {.translation = {0, 0.5f, 0}, .scale = {0.5f, 0.5f, 0.5f}})};
-    const perspective::Camera camera = camera_at({0.3f, 1.5f, 3}, {0, 0.3f, 0});
+    const pipeline::Camera camera = camera_at({0.3f, 1.5f, 3}, {0, 0.3f, 0});
     const Frame f = render(scene, camera, options, 48, 48);
     int pixels = 0;
     for (int y = 0; y < 48; ++y)
@@ -221,7 +221,7 @@ TEST(Occlusion, TheWorkedExampleAFloorBesideAWall) {
                     0.01)
             << d;
     // Looking along the wall from beside it: the floor's pixels at each distance.
-    const perspective::Camera camera = camera_at({-1.5f, 1.8f, 3.0f}, {0.6f, 0, 0});
+    const pipeline::Camera camera = camera_at({-1.5f, 1.8f, 3.0f}, {0.6f, 0, 0});
     const Rendered r = gbuffer_of(scene, camera, 160);
     AoOptions o;
     o.method = AoMethod::horizon, o.samples = 64, o.radius = 0.5f, o.blur = 0;
@@ -245,7 +245,7 @@ TEST(Occlusion, TheWorkedExampleAFloorBesideAWall) {
 TEST(Occlusion, TheRangeCheckKeepsAFarEdgeOffTheFloor) {
     const std::vector<MappedModel> scene = {
         floor_of(6), model("globe", {.translation = {0, 1.6f, 2.2f}, .scale = {0.4f, 0.4f, 0.4f}})};
-    const perspective::Camera camera = camera_at({0, 2, 4}, {0, 0, -1});
+    const pipeline::Camera camera = camera_at({0, 2, 4}, {0, 0, -1});
     const Rendered r = gbuffer_of(scene, camera, 128);
     const RayTracedAo truth(scene);
     const TruthFrame t = truth_frame(truth, camera, 128, 128, 0.5, 256);
@@ -282,7 +282,7 @@ TEST(Occlusion, TheRangeCheckKeepsAFarEdgeOffTheFloor) {
 TEST(Occlusion, ExtremeRadiiAndViewsGiveSharesInZeroToOne) {
     const std::vector<MappedModel> scene = {
         floor_of(2), model("globe", {.translation = {0, 0.5f, 0}, .scale = {0.5f, 0.5f, 0.5f}})};
-    for (const perspective::Camera& camera :
+    for (const pipeline::Camera& camera :
          {camera_at({0.3f, 1.5f, 3}, {0, 0, 0}), camera_at({0, 0.5f, 0.1f}, {0, 0.5f, -1}),
           camera_at({-3, 0.01f, 0}, {0, 0.01f, 0})})
         for (float radius : {1e-4f, 0.5f, 1e3f}) {
@@ -365,9 +365,9 @@ TEST(Baked, KnowsOnlyItsVertices) {
         }
     EXPECT_GT(on_line, 8);
     // Drawn: the floor 0.25 from the wall reads the blend of 1 and 0.5.
-    const perspective::Camera camera = camera_at({-1.5f, 1.8f, 3.0f}, {0.6f, 0, 0});
+    const pipeline::Camera camera = camera_at({-1.5f, 1.8f, 3.0f}, {0.6f, 0, 0});
     shadows::ShadowOptions options;
-    shadows::set_lights(options, perspective::ViewOptions{}, false);
+    shadows::set_lights(options, pipeline::ViewOptions{}, false);
     const shadows::ShadowMap map = shadows::shadow_map_for(scene, camera, 1, options);
     const rl::FloatImage ao = draw_baked(scene, camera, options, map, baked, 160, 160);
     const Rendered r = gbuffer_of(scene, camera, 160);

@@ -15,8 +15,8 @@
 namespace {
 
 using namespace antialiasing;
-using perspective::ClipVertex;
-using perspective::Fragment;
+using pipeline::ClipVertex;
+using pipeline::Fragment;
 
 // Triangles given directly in clip space (w = 1: clip space is NDC).
 struct ClipCorner {
@@ -69,10 +69,10 @@ struct Counted {
     }
 };
 
-using Target = perspective::RenderTarget<rl::vec3>;
+using Target = pipeline::RenderTarget<rl::vec3>;
 
 Target target_of(int size, int samples) {
-    perspective::TargetOptions o;
+    pipeline::TargetOptions o;
     o.samples = samples;
     o.depth.compare = zbuffer::DepthCompare::always;  // every covered sample is stored
     return Target(size, size, o, rl::vec3{0, 0, 0});
@@ -122,9 +122,9 @@ TEST(Coverage, SharedEdgesStoreEachSampleOnce) {
                 int runs = 0;
                 float lowest = 1;
                 Target ssaa = target_of(29, n), msaa = target_of(29, n);
-                const auto a = perspective::draw(geometry, Counted{&runs, &lowest}, ssaa, {},
+                const auto a = pipeline::draw(geometry, Counted{&runs, &lowest}, ssaa, {},
                                               Supersampling{offsets});
-                const auto b = perspective::draw(geometry, Counted{&runs, &lowest}, msaa, {},
+                const auto b = pipeline::draw(geometry, Counted{&runs, &lowest}, msaa, {},
                                               Multisampling{offsets});
                 const std::size_t all = 29u * 29u * static_cast<std::size_t>(n);
                 EXPECT_EQ(a.stored, all) << name(p) << " " << n;
@@ -150,8 +150,8 @@ TEST(Coverage, SamplesAreTestedWhereThePatternPutsThem) {
             int runs = 0;
             float lowest = 1;
             Target a = target_of(4, n), b = target_of(4, n);
-            perspective::draw(right, Counted{&runs, &lowest}, a, {}, Supersampling{offsets});
-            perspective::draw(right, Counted{&runs, &lowest}, b, {}, Multisampling{offsets});
+            pipeline::draw(right, Counted{&runs, &lowest}, a, {}, Supersampling{offsets});
+            pipeline::draw(right, Counted{&runs, &lowest}, b, {}, Multisampling{offsets});
             for (int s = 0; s < n; ++s) {
                 const float expected = offsets[static_cast<std::size_t>(s)].x > 0.1f ? 1.0f : 0.0f;
                 EXPECT_EQ(a.colour().get(n + s, 1).x, expected) << name(p) << " " << n << " " << s;
@@ -172,14 +172,14 @@ TEST(Coverage, MultisamplingKeepsTheNearerDepth) {
         {{rl::vec4{edge, -1, -0.5f, 1}, rl::vec4{3, -1, -0.5f, 1}, rl::vec4{edge, 3, -0.5f, 1}}}};
     const ClipTriangles far_all{
         {{rl::vec4{-1, -1, 0.5f, 1}, rl::vec4{3, -1, 0.5f, 1}, rl::vec4{-1, 3, 0.5f, 1}}}};
-    perspective::TargetOptions four;
+    pipeline::TargetOptions four;
     four.samples = 4;  // the default depth state: less, written
-    perspective::RenderTarget<rl::vec3> t(6, 6, four, rl::vec3{0, 0, 0});
+    pipeline::RenderTarget<rl::vec3> t(6, 6, four, rl::vec3{0, 0, 0});
     int runs = 0;
     float lowest = 1;
-    perspective::draw(near_part, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
+    pipeline::draw(near_part, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
     const std::vector<float> after_near = t.depth()->pixels();
-    perspective::draw(far_all, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
+    pipeline::draw(far_all, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
     int kept = 0;
     for (std::size_t i = 0; i < after_near.size(); ++i) {
         if (after_near[i] == t.depth_state.clear) continue;
@@ -213,10 +213,10 @@ TEST(Stability, AFenceOfSliversIsCoveredByItsShare) {
     int runs = 0;
     float lowest = 1;
     Target one = target_of(size, 1);
-    perspective::draw(bars, Counted{&runs, &lowest}, one);
+    pipeline::draw(bars, Counted{&runs, &lowest}, one);
     Target sixteen = target_of(size, 16);
     const std::vector<rl::vec2> grid = sample_offsets(Pattern::grid, 16);
-    perspective::draw(bars, Counted{&runs, &lowest}, sixteen, {}, Multisampling{grid});
+    pipeline::draw(bars, Counted{&runs, &lowest}, sixteen, {}, Multisampling{grid});
     const rl::Grid<rl::vec3> resolved = resolve(sixteen.colour(), grid, Resolve::box);
     int seen = 0;
     for (int x = 0; x < size; ++x) {
@@ -241,7 +241,7 @@ TEST(Stability, ASubPixelGapShowsByItsShareAtMost) {
         Target t = target_of(size, n);
         int runs = 0;
         float lowest = 1;
-        perspective::draw(two, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
+        pipeline::draw(two, Counted{&runs, &lowest}, t, {}, Multisampling{offsets});
         const rl::Grid<rl::vec3> light = resolve(t.colour(), offsets, Resolve::box);
         for (int x = 0; x < size; ++x)
             EXPECT_GE(light.get(x, 3).x, x == 5 ? 1.0f - 1.0f / static_cast<float>(n) : 1.0f)
@@ -259,14 +259,14 @@ TEST(Coverage, EachPolicyShadesAtItsRate) {
     int ssaa_runs = 0, msaa_runs = 0;
     float lowest = 1;
     Target a = target_of(20, 16), b = target_of(20, 16);
-    perspective::draw(covering, Counted{&ssaa_runs, &lowest}, a, {}, Supersampling{offsets});
-    perspective::draw(covering, Counted{&msaa_runs, &lowest}, b, {}, Multisampling{offsets});
+    pipeline::draw(covering, Counted{&ssaa_runs, &lowest}, a, {}, Supersampling{offsets});
+    pipeline::draw(covering, Counted{&msaa_runs, &lowest}, b, {}, Multisampling{offsets});
     EXPECT_EQ(ssaa_runs, 20 * 20 * 16);
     EXPECT_EQ(msaa_runs, 20 * 20);
     // A policy refuses a target of another sample count.
     Target four = target_of(8, 4);
     EXPECT_THROW(
-        perspective::draw(covering, Counted{&msaa_runs, &lowest}, four, {}, Multisampling{offsets}),
+        pipeline::draw(covering, Counted{&msaa_runs, &lowest}, four, {}, Multisampling{offsets}),
         std::invalid_argument);
 }
 
@@ -288,12 +288,12 @@ TEST(Coverage, AllSamplesCoveredResolveToTheOneSampleImage) {
     const ClipTriangles covering{
         {{rl::vec4{-1, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{-1, 3, 0, 1}}}};
     Target one = target_of(23, 1);
-    perspective::draw(covering, Gradient{}, one);
+    pipeline::draw(covering, Gradient{}, one);
     for (int n : {2, 4, 8, 16}) {
         const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, n);
         Target many = target_of(23, n);
         const auto counts =
-            perspective::draw(covering, Gradient{}, many, {}, Multisampling{offsets, ShadeAt::centre});
+            pipeline::draw(covering, Gradient{}, many, {}, Multisampling{offsets, ShadeAt::centre});
         EXPECT_EQ(counts.stored, 23u * 23u * static_cast<std::size_t>(n));
         const rl::Grid<rl::vec3> resolved = resolve(many.colour(), offsets, Resolve::box);
         for (int y = 0; y < 23; ++y)
@@ -313,12 +313,12 @@ TEST(Coverage, SupersamplingAFlatColourResolvesToTheOneSampleImage) {
     int runs = 0;
     float lowest = 1;
     Target one = target_of(23, 1);
-    perspective::draw(covering, Counted{&runs, &lowest}, one);
+    pipeline::draw(covering, Counted{&runs, &lowest}, one);
     for (int n : {2, 4, 8, 16}) {
         const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, n);
         Target many = target_of(23, n);
         runs = 0;
-        perspective::draw(covering, Counted{&runs, &lowest}, many, {}, Supersampling{offsets});
+        pipeline::draw(covering, Counted{&runs, &lowest}, many, {}, Supersampling{offsets});
         EXPECT_EQ(runs, 23 * 23 * n);
         EXPECT_EQ(resolve(many.colour(), offsets, Resolve::box), one.colour()) << n;
     }
@@ -335,9 +335,9 @@ TEST(Coverage, CentroidShadingStaysInsideTheTriangle) {
     float centre_lowest = 1, centroid_lowest = 1;
     int runs = 0;
     Target a = target_of(31, 8), b = target_of(31, 8);
-    perspective::draw(thin, Counted{&runs, &centre_lowest}, a, {},
+    pipeline::draw(thin, Counted{&runs, &centre_lowest}, a, {},
                    Multisampling{offsets, ShadeAt::centre});
-    perspective::draw(thin, Counted{&runs, &centroid_lowest}, b, {},
+    pipeline::draw(thin, Counted{&runs, &centroid_lowest}, b, {},
                    Multisampling{offsets, ShadeAt::centroid});
     EXPECT_LT(centre_lowest, -0.01f);
     EXPECT_GE(centroid_lowest, -1e-6f);
@@ -359,10 +359,10 @@ struct Discarding {
 
 TEST(Coverage, MultisamplingWithADiscardingProgramStoresNothingThere) {
     const std::vector<rl::vec2> offsets = sample_offsets(Pattern::standard, 4);
-    perspective::TargetOptions four;
+    pipeline::TargetOptions four;
     four.samples = 4;
-    perspective::RenderTarget<rl::vec3> t(8, 8, four, rl::vec3{0, 0, 0});
-    perspective::draw(shared_edges(), Discarding{}, t, {}, Multisampling{offsets});
+    pipeline::RenderTarget<rl::vec3> t(8, 8, four, rl::vec3{0, 0, 0});
+    pipeline::draw(shared_edges(), Discarding{}, t, {}, Multisampling{offsets});
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
             for (int s = 0; s < 4; ++s) {
@@ -384,7 +384,7 @@ TEST(Resolve, AHalfCoveredPixelIsHalfTheLight) {
     const float x = (1.5f / 4) * 2 - 1;
     const ClipTriangles right{
         {{rl::vec4{x, -1, 0, 1}, rl::vec4{3, -1, 0, 1}, rl::vec4{x, 3, 0, 1}}}};
-    perspective::draw(right, Counted{&runs, &lowest}, t, {}, Supersampling{offsets});
+    pipeline::draw(right, Counted{&runs, &lowest}, t, {}, Supersampling{offsets});
     const rl::Grid<rl::vec3> light = resolve(t.colour(), offsets, Resolve::box);
     EXPECT_FLOAT_EQ(light.get(1, 0).x, 0.5f);
     EXPECT_EQ(encoded(light).at(1, 0).r, 188);

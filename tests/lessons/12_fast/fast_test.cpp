@@ -184,7 +184,7 @@ TEST(Coverage, RefusesWhatLessonTwoRefuses) {
 
 struct Scene {
     std::vector<normal_mapping::MappedModel> models;
-    perspective::Camera camera;
+    pipeline::Camera camera;
 };
 
 Scene default_scene(const normal_mapping::RenderOptions& options) {
@@ -201,13 +201,13 @@ Scene default_scene(const normal_mapping::RenderOptions& options) {
 
 rl::Image lesson07(const Scene& s, const normal_mapping::RenderOptions& options, int width,
                    int height) {
-    perspective::ColourTarget frame = perspective::colour_target(width, height);
+    pipeline::ColourTarget frame = pipeline::colour_target(width, height);
     normal_mapping::render(s.models, s.camera, options, frame);
     return frame.colour();
 }
 
 rl::Image fast_image(const Scene& s, const fast::FastOptions& options, int width, int height,
-                     const perspective::Camera* camera = nullptr) {
+                     const pipeline::Camera* camera = nullptr) {
     fast::Renderer renderer(s.models, width, height, options);
     renderer.render(camera ? *camera : s.camera);
     return renderer.frame();
@@ -238,9 +238,9 @@ TEST(Image, MatchesLessonSevenForEveryShadingOption) {
         {"naive", [](auto& o) { o.output = shading::Output::naive; }},
         {"one light", [](auto& o) { o.lighting.lights.resize(1); }},
         {"shininess 7.5", [](auto& o) { o.lighting.shininess = 7.5f; }},
-        {"affine", [](auto& o) { o.pipeline.interpolation = perspective::Interpolation::affine; }},
-        {"all planes", [](auto& o) { o.pipeline.clip = perspective::ClipMode::all; }},
-        {"no culling", [](auto& o) { o.pipeline.cull = perspective::Cull::none; }},
+        {"affine", [](auto& o) { o.pipeline.interpolation = pipeline::Interpolation::affine; }},
+        {"all planes", [](auto& o) { o.pipeline.clip = pipeline::ClipMode::all; }},
+        {"no culling", [](auto& o) { o.pipeline.cull = pipeline::Cull::none; }},
     };
     for (const Variant& v : variants) {
         fast::FastOptions options;
@@ -338,7 +338,7 @@ TEST(Image, RandomDegenerateMeshesMatchLessonSevenAtAnySize) {
         Scene s{{}, {}};
         s.models.push_back(normal_mapping::load_mapped_model(
             obj, rl::mat4::identity(), normal_mapping::TangentMethod::split, warnings));
-        s.camera = perspective::frame_box(normal_mapping::scene_box(s.models), 50, 1);
+        s.camera = pipeline::frame_box(normal_mapping::scene_box(s.models), 50, 1);
         expect_lesson07_tolerance(
             lesson07(s, options.render, 64, 64), fast_image(s, options, 64, 64),
             "mesh " + testing::PrintToString(mesh) + " at scale " + testing::PrintToString(scale));
@@ -510,11 +510,11 @@ TEST(Frames, NoAllocationAfterTheFirstFrame) {
 }
 
 TEST(Frames, TheOrbitEndsOnTheCameraGiven) {
-    perspective::Camera c;
+    pipeline::Camera c;
     c.eye = {1, 2, 3};
-    const perspective::Camera last = fast::orbit(c, 9, 10);
+    const pipeline::Camera last = fast::orbit(c, 9, 10);
     EXPECT_EQ(last.eye, c.eye);
-    const perspective::Camera half = fast::orbit(c, 4, 10);  // 180 degrees about +y
+    const pipeline::Camera half = fast::orbit(c, 4, 10);  // 180 degrees about +y
     EXPECT_NEAR(half.eye.x, -1, 1e-5);
     EXPECT_NEAR(half.eye.y, 2, 1e-5);
     EXPECT_NEAR(half.eye.z, -3, 1e-5);

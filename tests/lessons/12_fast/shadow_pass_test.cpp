@@ -58,7 +58,7 @@ Compared compare(const rl::FloatImage& fast, const rl::FloatImage& lesson08) {
 
 TEST(ShadowPass, TheMapIsLessonEightsTexelForTexel) {
     const std::vector<MappedModel> models = scene();
-    const perspective::Box box = shadows::scene_box(models);
+    const pipeline::Box box = shadows::scene_box(models);
     struct Case {
         rl::vec3 towards_light;
         shadows::ShadowMapOptions map;
@@ -69,7 +69,7 @@ TEST(ShadowPass, TheMapIsLessonEightsTexelForTexel) {
         // A negative bias: a block's nearest depth must move with it.
         {{-0.7f, 0.4f, 0.2f}, {.size = 333, .constant_bias = -0.004f, .slope_bias = 0}},
         {{0.05f, 1.0f, 0.02f}, {.size = 37, .slope_bias = 0}},  // no bias, one tile, part blocks
-        {shadows::kSceneLight, {.size = 512, .cull = perspective::Cull::front}},
+        {shadows::kSceneLight, {.size = 512, .cull = pipeline::Cull::front}},
         {{1.0f, 0.02f, 0.1f}, {.size = 200, .slope_bias = 1}},  // a grazing light
     };
     for (const Case& c : cases) {
@@ -109,8 +109,8 @@ TEST(ShadowPass, ABlockIsSkippedOnlyWhereTheBiasedTriangleCannotPass) {
 TEST(ShadowPass, TheMapIsLessonEightsForASpotLightAndAFittedView) {
     const std::vector<MappedModel> models = scene();
     std::vector<std::string> warnings;
-    perspective::ViewOptions view;
-    const perspective::ViewedScene<MappedModel> viewed =
+    pipeline::ViewOptions view;
+    const pipeline::ViewedScene<MappedModel> viewed =
         shadows::load_scene(view, normal_mapping::TangentMethod::split, 320, 240, warnings);
     shadows::ShadowOptions options;
     options.map.size = 640;
@@ -166,12 +166,12 @@ TEST(ShadowPass, RefusesWhatLessonEightRefuses) {
         std::string lesson08, ours;
         try {
             shadows::render_shadow_map(models, light, options);
-        } catch (const perspective::OverdrawError& e) {
+        } catch (const pipeline::OverdrawError& e) {
             lesson08 = e.what();
         }
         try {
             fast::ShadowPass(models, options, 2).render(light);
-        } catch (const perspective::OverdrawError& e) {
+        } catch (const pipeline::OverdrawError& e) {
             ours = e.what();
         }
         EXPECT_EQ(ours, lesson08) << layers << " layers";
@@ -182,7 +182,7 @@ TEST(ShadowPass, RefusesWhatLessonEightRefuses) {
 }
 
 // The fast path prepared for a scene at a picture's size, on `threads` threads.
-fast::Renderer fast_renderer(const perspective::ViewedScene<MappedModel>& s,
+fast::Renderer fast_renderer(const pipeline::ViewedScene<MappedModel>& s,
                              const shadows::ShadowOptions& o, int width, int height, int threads) {
     fast::FastOptions f;
     f.threads = threads;
@@ -197,12 +197,12 @@ struct SecondPass {
     rl::Image lesson08;
     std::vector<rl::Image> fast;
 };
-SecondPass second_pass(const perspective::ViewedScene<MappedModel>& s, const shadows::ShadowOptions& o,
+SecondPass second_pass(const pipeline::ViewedScene<MappedModel>& s, const shadows::ShadowOptions& o,
                        std::initializer_list<fast::Renderer*> renderers) {
     const rl::Image& size = (*renderers.begin())->frame();
     const float aspect = static_cast<float>(size.width()) / static_cast<float>(size.height());
     const shadows::ShadowMap map = shadows::shadow_map_for(s.models, s.camera, aspect, o);
-    perspective::ColourTarget target = perspective::colour_target(size.width(), size.height());
+    pipeline::ColourTarget target = pipeline::colour_target(size.width(), size.height());
     shadows::render(s.models, s.camera, o, map, target);
     SecondPass pictures{target.colour(), {}};
     for (fast::Renderer* renderer : renderers) {
@@ -221,11 +221,11 @@ int differing(const rl::Image& a, const rl::Image& b) {
 
 // Lesson 08's scene from its camera, with its lights.
 struct LitScene {
-    perspective::ViewedScene<MappedModel> scene;
+    pipeline::ViewedScene<MappedModel> scene;
     shadows::ShadowOptions options;
     LitScene(int width, int height) {
         std::vector<std::string> warnings;
-        perspective::ViewOptions view;
+        pipeline::ViewOptions view;
         view.light = {shadows::kSceneLight.x, shadows::kSceneLight.y, shadows::kSceneLight.z};
         scene = shadows::load_scene(view, normal_mapping::TangentMethod::split, width, height,
                                     warnings);

@@ -103,13 +103,13 @@ TEST(Keys, EveryKeyHasANameAndAHelpLine) {
 }
 
 TEST(Orbit, GivesBackTheCameraItCameFrom) {
-    perspective::Camera c;
+    pipeline::Camera c;
     c.eye = {1.5f, 2.0f, -3.0f};
     c.target = {0.2f, 0.4f, 0.1f};
-    perspective::Box box;
+    pipeline::Box box;
     box.add(rl::vec3{-1, 0, -1});
     box.add(rl::vec3{1, 1, 1});
-    const perspective::Camera back = viewer::camera_of(viewer::orbit_of(c), c, {}, box, 1.0f);
+    const pipeline::Camera back = viewer::camera_of(viewer::orbit_of(c), c, {}, box, 1.0f);
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(back.eye[k], c.eye[k], 1e-4f);
     EXPECT_GT(back.near, 0);
     EXPECT_LT(back.near, back.far);
@@ -119,19 +119,19 @@ TEST(Orbit, DraggingStopsShortOfThePoles) {
     viewer::Orbit o{0, 0, 3};
     viewer::drag(o, 0, 100000);
     EXPECT_LT(o.pitch, 90);
-    perspective::Camera c;
-    perspective::Box box;
+    pipeline::Camera c;
+    pipeline::Box box;
     box.add(rl::vec3{-1, -1, -1});
     box.add(rl::vec3{1, 1, 1});
     EXPECT_NO_THROW(viewer::camera_of(o, c, {}, box, 1.0f));  // up is never the view direction
 }
 
 TEST(Orbit, ZoomingStopsBeforeTheTargetAndBeforeInfinity) {
-    perspective::Camera c;  // eye 3 from the target
+    pipeline::Camera c;  // eye 3 from the target
     viewer::Orbit o = viewer::orbit_of(c);
     viewer::zoom(o, 100000);
     EXPECT_FLOAT_EQ(o.distance, 3.0f / 1000);
-    perspective::Box box;
+    pipeline::Box box;
     box.add(rl::vec3{-1, -1, -1});
     box.add(rl::vec3{1, 1, 1});
     EXPECT_NO_THROW(viewer::camera_of(o, c, {}, box, 1.0f));
@@ -141,23 +141,23 @@ TEST(Orbit, ZoomingStopsBeforeTheTargetAndBeforeInfinity) {
 }
 
 TEST(Orbit, TurnsAboutTheCamerasOwnUp) {
-    perspective::Camera c;
+    pipeline::Camera c;
     c.up = {0, 0, 1};  // z up
     c.eye = {3, 0, 1};
     c.target = {0, 0, 0};
-    perspective::Box box;
+    pipeline::Box box;
     box.add(rl::vec3{-1, -1, -1});
     box.add(rl::vec3{1, 1, 1});
     viewer::Orbit o = viewer::orbit_of(c);
     o.yaw += 90;
-    const perspective::Camera turned = viewer::camera_of(o, c, {}, box, 1.0f);
+    const pipeline::Camera turned = viewer::camera_of(o, c, {}, box, 1.0f);
     EXPECT_NEAR(turned.eye.z, c.eye.z, 1e-4f);  // the height above the target kept
     EXPECT_NEAR(rl::length(turned.eye), rl::length(c.eye), 1e-4f);
 }
 
 struct Scene {
     normal_mapping::MappedView request;
-    perspective::ViewedScene<normal_mapping::MappedModel> scene;
+    pipeline::ViewedScene<normal_mapping::MappedModel> scene;
     Scene() {
         request.every_normal_map = true;
         std::vector<std::string> warnings;
@@ -196,7 +196,7 @@ TEST(Frames, TheShadowsAreLessonEightsPicture) {
         }
         const shadows::ShadowMap map =
             shadows::shadow_map_for(s.scene.models, s.scene.camera, 96.0f / 64.0f, o);
-        perspective::ColourTarget target = perspective::colour_target(96, 64);
+        pipeline::ColourTarget target = pipeline::colour_target(96, 64);
         shadows::render(s.scene.models, s.scene.camera, o, map, target);
         // The fast path's second pass: within a level of lesson 08's (12_fast's own tests).
         EXPECT_LE(rl::compare_images(shown, target.colour(), 1).max_abs, 1) << "frame " << frame;
@@ -244,7 +244,7 @@ TEST(Frames, AMovedLightReachesEveryPath) {
     EXPECT_EQ(moved, reference.frame());
 
     settings.path = viewer::Path::lesson07;
-    perspective::ColourTarget target = perspective::colour_target(96, 64);
+    pipeline::ColourTarget target = pipeline::colour_target(96, 64);
     normal_mapping::render(s.scene.models, s.scene.camera, o.render, target);
     EXPECT_EQ(renderer.render(settings, s.scene.camera, 96, 64), target.colour());
 
@@ -265,22 +265,22 @@ TEST(Wireframe, DrawsEdgesOverThePicture) {
 }
 
 TEST(Wireframe, ASegmentIsCutWhereItCrossesTheNearPlane) {
-    perspective::ClipPosition a{0, 0, 0, 2}, b{4, 0, 0, -2};
+    pipeline::ClipPosition a{0, 0, 0, 2}, b{4, 0, 0, -2};
     ASSERT_TRUE(viewer::cut_to_front(a, b, 0.5));
     EXPECT_DOUBLE_EQ(a.w, 2);
     EXPECT_DOUBLE_EQ(b.w, 0.5);
     EXPECT_DOUBLE_EQ(b.x, 1.5);  // t = (2 - 0.5) / (2 + 2) = 0.375 of the way to b
-    perspective::ClipPosition c{0, 0, 0, -1}, d{1, 1, 1, 3};
+    pipeline::ClipPosition c{0, 0, 0, -1}, d{1, 1, 1, 3};
     ASSERT_TRUE(viewer::cut_to_front(c, d, 0.5));  // either end may be the one behind
     EXPECT_DOUBLE_EQ(c.w, 3);
     EXPECT_DOUBLE_EQ(d.w, 0.5);
-    perspective::ClipPosition e{0, 0, 0, 0.1}, f{0, 0, 0, -3};
+    pipeline::ClipPosition e{0, 0, 0, 0.1}, f{0, 0, 0, -3};
     EXPECT_FALSE(viewer::cut_to_front(e, f, 0.5));  // wholly behind
 }
 
 TEST(Wireframe, EdgesBehindTheEyeAreCutNotDivided) {
     Scene s;
-    perspective::Camera inside = s.scene.camera;
+    pipeline::Camera inside = s.scene.camera;
     inside.eye = s.scene.camera.target;  // in the middle of the scene: edges pass behind
     inside.eye.z += 0.01f;
     inside.near = 0.001f;
