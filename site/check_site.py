@@ -458,7 +458,7 @@ def check_pages(options, pages: list, chromium: str, base: str) -> int:
         try:
             answers.update(check_share(shares[index], chromium, options, base, cache,
                                        search=index == 0))
-        except (RuntimeError, TimeoutError, OSError) as error:
+        except Exception as error:  # raised again below, in the main thread
             errors.append(error)
 
     threads = [threading.Thread(target=run, args=(i,)) for i in range(browsers)]

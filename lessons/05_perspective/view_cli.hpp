@@ -5,8 +5,10 @@
 //
 //   pipeline::ViewOptions view;
 //   pipeline::add_view_options(app, view, "floor, crate and globe from obj/");
-//   if (const auto exit = app.parse(argc, argv)) return *exit;
-//   const pipeline::Camera camera = pipeline::resolve_camera(view, box, aspect);
+//   return app.run(argc, argv, "05_perspective", [&] {  // once the options are parsed
+//       const pipeline::Camera camera = pipeline::resolve_camera(view, box, aspect);
+//       return 0;
+//   });
 #pragma once
 
 #include <string>

@@ -6,8 +6,10 @@
 //
 //   normal_mapping::MappedCli cli;
 //   normal_mapping::add_mapped_options(app, cli, "floor, globe and crate from obj/");
-//   if (const auto exit = app.parse(argc, argv)) return *exit;
-//   const normal_mapping::MappedScene scene = normal_mapping::load_scene(cli, 800, 600, "07");
+//   return app.run(argc, argv, "07_normal_mapping", [&] {  // once the options are parsed
+//       const normal_mapping::MappedScene scene = normal_mapping::load_scene(cli, 800, 600, "07");
+//       return 0;
+//   });
 #pragma once
 
 #include <string>

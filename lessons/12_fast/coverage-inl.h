@@ -193,9 +193,8 @@ HWY_INLINE SlotRange slots_of(BlockRows rows, std::size_t n) {
 }
 // [/doc:small-triangles]
 
-// The visibility pass: depth and the id of the nearest triangle at every
-// pixel (or, without shade_once, each passing pixel shaded at once, as
-// lesson 07 does).
+// A vector of fragments shaded (shading-inl.h): what depth_pass calls when
+// shade_once is off.
 HWY_NOINLINE VU shade(DF df, const Material& m, const FastTriangle& t, const VF (&b)[3], MF active);
 
 // The depth pass over the slots of one block a triangle may cover: depth
@@ -280,6 +279,9 @@ HWY_INLINE void rasterize_block(DF df, const TileWork& work, const FastTriangle&
         buffers.block_far[block] = farthest_in_block(df, buffers.depth.get() + base);
 }
 
+// The visibility pass over a tile: depth and the id of the nearest triangle
+// at every pixel (or, without shade_once, each passing pixel shaded at once,
+// as lesson 07 does), the tile's triangles in drawing order.
 void RasterizeTile(const TileWork& work, TileBuffers& buffers, TileCounts& counts) {
     const DF df;
     // The depth state's clear, no triangle anywhere, every block's bound the far plane.

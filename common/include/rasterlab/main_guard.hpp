@@ -1,8 +1,10 @@
-// The one place where a program's errors become a message and an exit code.
+// The one place where a program's errors become a message and an exit code
+// (the lessons' programs reach it through rl::CommandLine::run, the labs
+// directly).
 //
-//   return rl::guarded_main("02_triangles", [&] {  // an exception: a message, exit code 1
+//   return rl::guarded_main("02_triangles_lab", [&] {  // an exception: a message, exit code 1
 //       const rl::Mesh mesh = rl::load_obj(model, &warnings);
-//       rl::print_warnings("02_triangles", warnings);  // each distinct text once, 10 at most
+//       rl::print_warnings("02_triangles_lab", warnings);  // each distinct text once, 10 at most
 //       return 0;
 //   });
 #pragma once

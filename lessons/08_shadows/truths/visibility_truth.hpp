@@ -1,6 +1,6 @@
 // The lab's ground truth for shadows, computed without the shadow map: at
 // every pixel centre a ray from the eye, in double, finds the visible
-// surface point (lesson 05's ray caster, through this lab's BVH); a second
+// surface point (lesson 05's ray caster, through the BVH beside this file); a second
 // ray from that point towards the light says whether anything is in the
 // way. The renderer's answers at the same pixels come from a probe: the
 // second pass with a shader that writes the map's answer and the triangle
