@@ -103,6 +103,7 @@ FastModel fast_model(const normal_mapping::MappedModel& model, const FastOptions
 struct Renderer::Impl {
     FastOptions options;
     int width, height;
+    zbuffer::DepthState map_bias;  // a shadow map's pass: lesson 08's constant and slope bias
     rl::Workers workers;
     std::vector<FastModel> models;
     // Per model, set once: lesson 06's uniforms (only the MVP and the eye
@@ -141,6 +142,7 @@ struct Renderer::Impl {
     Impl(const std::vector<normal_mapping::MappedModel>& sources, int w, int h,
          const FastOptions& o)
         : options(o), width(w), height(h), workers(o.threads) {
+        map_bias.constant_bias = o.constant_bias, map_bias.slope_bias = o.slope_bias;
         if (o.tile_size < kBlock || o.tile_size % kBlock != 0 || o.tile_size > 1024)
             throw std::invalid_argument(
                 "--tile-size: must be a multiple of 8 from 8 to 1024, not " +
@@ -436,12 +438,10 @@ void Renderer::Impl::keep_triangle(Piece& piece, const Setup& t) {
         return;
     }
     if (options.depth_only) {
-        zbuffer::DepthState bias;
-        bias.constant_bias = options.constant_bias, bias.slope_bias = options.slope_bias;
         // [doc:depth-bias]
         // Lesson 08's bias, once per triangle, and the nearest depth it
         // can then give (for the hierarchical depth test).
-        fast.depth_bias = pipeline::depth_bias(t, bias);
+        fast.depth_bias = pipeline::depth_bias(t, map_bias);
         if (fast.depth_bias != 0)
             fast.z_nearest = std::clamp(fast.z_min + fast.depth_bias, 0.0f, 1.0f);
         // [/doc:depth-bias]
