@@ -253,14 +253,19 @@ def on_files(files, config):
 
 
 def on_nav(nav, config, files):
-    """Every lesson page is in mkdocs.yml's nav, in the order of its number:
-    a new lesson's page cannot be left out of the site's navigation."""
-    lessons = sorted(p.name for p in pathlib.Path(config["docs_dir"]).glob("[0-9][0-9]_*.md"))
-    listed = [page.file.src_uri for page in nav.pages if re.match(r"\d\d_", page.file.src_uri)]
-    if listed != lessons:
-        missing = sorted(set(lessons) - set(listed))
-        raise PluginError("mkdocs.yml's nav must list every lesson page in order: "
-                          + (f"{', '.join(missing)} missing" if missing else f"it has {listed}"))
+    """Every lesson page is in mkdocs.yml's nav, in the order of its number,
+    and so is every lab page (NN_name_lab.md, in the labs' part of the nav):
+    a new lesson's page or lab page cannot be left out of the site's
+    navigation."""
+    pages = sorted(p.name for p in pathlib.Path(config["docs_dir"]).glob("[0-9][0-9]_*.md"))
+    listed_all = [page.file.src_uri for page in nav.pages if re.match(r"\d\d_", page.file.src_uri)]
+    for kind, wanted in (("lesson", [p for p in pages if not p.endswith("_lab.md")]),
+                         ("lab", [p for p in pages if p.endswith("_lab.md")])):
+        listed = [p for p in listed_all if p.endswith("_lab.md") == (kind == "lab")]
+        if listed != wanted:
+            missing = sorted(set(wanted) - set(listed))
+            raise PluginError(f"mkdocs.yml's nav must list every {kind} page in order: "
+                              + (f"{', '.join(missing)} missing" if missing else f"it has {listed}"))
     return nav
 
 

@@ -493,7 +493,6 @@ void Renderer::Impl::bin_triangles() {
             for (int tx = f.x0 / tile; tx <= f.x1 / tile; ++tx)
                 visit(static_cast<std::size_t>(ty * s.tiles_x + tx));
     };
-    // [doc:binning]
     // As many parts as threads, unless their counts would pass 2^24 (tiles
     // of 8 at 16384²): then one part.
     std::size_t parts = s.options.parallel ? static_cast<std::size_t>(s.workers.threads()) : 1;
@@ -526,6 +525,7 @@ void Renderer::Impl::bin_triangles() {
     for (std::size_t e : s.part_entries) entries += e;
     if (entries > s.options.max_binned_entries)
         throw_binning_cap(entries, s.options.max_binned_entries, tile);
+    // [doc:binning]
     // part_bins[p * tiles + i]: part p's entries in tile i, then where it writes them.
     s.part_bins.assign(parts * s.tiles, 0);
     in_parts([&](std::size_t p, std::uint32_t first, std::uint32_t end) {

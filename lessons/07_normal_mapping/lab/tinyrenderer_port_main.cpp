@@ -1,6 +1,6 @@
 // The port of tinyrenderer's renderer as a program of its own, so that the
 // lab can time a whole process of it against 07_normal_mapping doing the same
-// work (docs/07_normal_mapping.md#where-the-time-goes). It reads one OBJ with
+// work (docs/07_normal_mapping_lab.md#where-the-time-goes). It reads one OBJ with
 // its diffuse and tangent-space normal maps, frames it with lesson 05's
 // camera (the same view options), renders one frame and writes it.
 #include <chrono>
