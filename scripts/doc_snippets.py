@@ -31,7 +31,15 @@ docs/charts/ by the row whose columns have the given values:
     ... takes <!-- value: docs/charts/02_triangles.md | method=edge |
     scene=small (10 px) | ns_per_triangle -->224<!-- /value --> ns ...
 
-(on one line). Optional last parts: `x=100` multiplies the number (per
+(on one line). A value can also be derived from two cells, so that a ratio
+or a difference a sentence states follows the tables at every lab run: two
+specs in brackets with `/` or `-` between them, the options after both:
+
+    ... <!-- value: (docs/charts/12_sizes.md | size=1024 | renderer=lesson 07 |
+    ms_per_frame) / (docs/charts/12_sizes.md | size=1024 | renderer=fast |
+    ms_per_frame) | fmt=.1f -->15.3<!-- /value --> times faster ...
+
+Optional last parts: `x=100` multiplies the number (per
 million to per cent: `x=0.0001`), `fmt=.1f` formats it with Python's format
 spec (`fmt=.0f`, `fmt=,.0f`, `fmt=.2g`), `agg=min` or `agg=max` takes the
 least or greatest of the column over every row that matches (a range
@@ -129,17 +137,30 @@ def table_rows(path: pathlib.Path) -> list:
     return rows
 
 
-def value(match: re.Match) -> str:
+DERIVED = re.compile(r"^\((?P<a>.*)\)\s*(?P<op>[/-])\s*\((?P<b>.*)\)(?P<options>.*)$")
+
+
+def split_spec(spec: str) -> list:
     # Inside a Markdown table a marker separates its fields with "\|", as a
     # bare "|" would split the table's cell.
-    # Conditions are key=value, or key=lo..hi (either end may be left out)
-    # for a range of rows; agg=min or agg=max takes the least or the greatest of the
-    # column over the rows (a range quoted as "lo–hi" is two such values).
-    parts = [p.strip() for p in re.split(r"\\?\|", match.group("spec"))]
+    return [p.strip() for p in re.split(r"\\?\|", spec) if p.strip()]
+
+
+def take_options(parts: list) -> dict:
+    """Pops the trailing fmt=, x= and agg= parts off a spec's parts."""
     options = {}
     while parts and parts[-1].split("=", 1)[0] in ("fmt", "x", "agg"):
         key, text = parts.pop().split("=", 1)
         options[key] = text
+    return options
+
+
+def cell(parts: list, aggregate) -> str:
+    """The text of one table cell: parts are the table, its conditions and
+    the column. Conditions are key=value, or key=lo..hi (either end may be
+    left out) for a range of rows; agg=min or agg=max takes the least or the
+    greatest of the column over the rows (a range quoted as "lo–hi" is two
+    such values)."""
     table, *conditions, column = parts
     source = ROOT / table
     if not source.is_file():
@@ -155,7 +176,6 @@ def value(match: re.Match) -> str:
         else:
             tests.append(lambda r, k=key, v=wanted: r.get(k) == v)
     rows = [r for r in table_rows(source) if all(test(r) for test in tests)]
-    aggregate = options.pop("agg", None)
     if aggregate not in (None, "min", "max"):
         raise LookupError(f"agg={aggregate}: only min or max")
     if not rows or (len(rows) != 1 and aggregate is None):
@@ -165,13 +185,36 @@ def value(match: re.Match) -> str:
         raise LookupError(f"{table} has no column {column}")
     if aggregate:
         numbers = [float(r[column]) for r in rows]
-        text = repr(min(numbers) if aggregate == "min" else max(numbers))
-    else:
-        text = rows[0][column]
+        return repr(min(numbers) if aggregate == "min" else max(numbers))
+    return rows[0][column]
+
+
+def value(match: re.Match) -> str:
+    spec = match.group("spec")
+    derived = DERIVED.match(spec)
+    if derived:  # (a) / (b) or (a) - (b): each side one cell, its own agg= allowed
+        sides = []
+        for side in (derived.group("a"), derived.group("b")):
+            parts = split_spec(side)
+            sides.append(float(cell(parts, take_options(parts).get("agg"))))
+        options = take_options(split_spec(derived.group("options")))
+        if derived.group("op") == "/":
+            if sides[1] == 0:
+                raise LookupError(f"a ratio over a zero cell: {spec}")
+            number = sides[0] / sides[1]
+        else:
+            number = sides[0] - sides[1]
+        number *= float(options.get("x", "1"))
+        text = format(number, options.get("fmt", "g"))
+        return f"<!-- value: {spec} -->{text}<!-- /value -->"
+    parts = split_spec(spec)
+    options = take_options(parts)
+    aggregate = options.pop("agg", None)
+    text = cell(parts, aggregate)
     if options or aggregate:
         number = float(text) * float(options.get("x", "1"))
         text = format(number, options.get("fmt", "g"))
-    return f"<!-- value: {match.group('spec')} -->{text}<!-- /value -->"
+    return f"<!-- value: {spec} -->{text}<!-- /value -->"
 
 
 def source_regions() -> set:

@@ -61,4 +61,17 @@ with tempfile.TemporaryDirectory() as tmp:
     assert run(root, "--fill") == 0
     assert "takes <!-- value:" in page.read_text(), page.read_text()
     assert run(root) == 0, "a joined value marker failed the check"
+
+    # A derived value: the ratio or the difference of two cells, kept up to
+    # date with the table like any other (99 / 12.5 = 7.92, 99 - 12.5 = 86.5).
+    a = "docs/charts/t.md | method=b | scene=big (1 px) | ns"
+    b = "docs/charts/t.md | method=a | scene=big (1 px) | ns"
+    page.write_text(shown + f"<!-- value: ({a}) / ({b}) | fmt=.2f -->8<!-- /value --> times, "
+                    f"<!-- value: ({a}) - ({b}) | fmt=.1f -->0<!-- /value --> ns more\n")
+    assert run(root) == 1, "a stale ratio passed the check"
+    assert run(root, "--fill") == 0
+    assert "-->7.92<!--" in page.read_text() and "-->86.5<!--" in page.read_text(), page.read_text()
+    assert run(root) == 0, "a filled ratio failed the check"
+    page.write_text(shown + f"<!-- value: ({a}) / ({b.replace('method=a', 'method=c')}) -->1<!-- /value -->\n")
+    assert run(root) == 1, "a ratio over no row passed the check"
 print("doc_snippets self-test: ok")
