@@ -26,6 +26,16 @@ that
 - a lesson's page links to the previous and the next page;
 - no Markdown table is left as text (a table inside HTML that the Markdown
   reader did not enter);
+- no inline code is broken across lines inside a word (`--tangents` shown
+  as "-" and "-tangents");
+- no text of a chart or diagram overlaps another or is cut at the figure's
+  edge, no note of a chart runs over the edge of its axes, no series of a
+  chart lies exactly under another, and no text of a diagram is smaller
+  than 8 px as shown;
+- a lesson's opening picture is not too dark or too flat (its luma's mean
+  and standard deviation above a floor);
+- a lesson's page stays within its budget of words (the lab's full tables
+  and method go to its lab page);
 
 and that the search box finds a lesson by a word of its text. A screenshot of
 each page goes to the screenshots folder. Exit 0 when every check holds, 1
@@ -54,6 +64,10 @@ import urllib.request
 SKIP = 77
 PAGE_TIMEOUT = 30.0  # seconds for one page to load; the slowest here took under 2
 WIDTH, HEIGHT = 1280, 900
+WORD_BUDGET = 8000  # words of a lesson's page, its HTML comments (value markers) left out
+# The opening picture of a lesson's page, its luma on 0-255: the mean (how
+# bright) and the standard deviation (how much contrast) at least these.
+OPENING_MIN_MEAN, OPENING_MIN_SPREAD = 25.0, 15.0  # the lessons' measure 28-40 and 20-45
 
 
 class Browser:
@@ -248,6 +262,176 @@ PAGE_FACTS = r"""
 """
 
 
+# What a page's figures and inline code show, measured as displayed.
+FIGURE_FACTS = r"""
+// What a page's figures and code spans show a reader, once loaded (async:
+// each SVG figure is fetched and laid out again, at the size it is shown, so
+// that its text can be measured).
+(async () => {
+  const article = document.querySelector("article") || document.body;
+  // Inline code broken inside a word: a line ends at a character that is not
+  // a space (a hyphen, a slash, a dot), so the reader sees, and copies, a
+  // word in two pieces. In a table's cell a word wider than the whole cell
+  // has to break somewhere (or the table would scroll): that break is allowed.
+  const splitCode = [];
+  for (const code of article.querySelectorAll("code")) {
+    if (code.closest("pre") || code.getClientRects().length < 2) continue;
+    const cell = code.closest("td, th");
+    const room = cell ? cell.clientWidth - parseFloat(getComputedStyle(cell).paddingLeft)
+                        - parseFloat(getComputedStyle(cell).paddingRight) : Infinity;
+    const walker = document.createTreeWalker(code, NodeFilter.SHOW_TEXT);
+    // The top of the word's last character, whether the word broke, its width.
+    let previous = null, broken = false, wordBroken = false, width = 0;
+    const endWord = () => {
+      if (wordBroken && width <= room + 1) broken = true;
+      previous = null, wordBroken = false, width = 0;
+    };
+    for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+      for (let i = 0; i < node.data.length; ++i) {
+        const character = node.data[i];
+        if (/\s/.test(character)) {  // a line may end at a space
+          endWord();
+          continue;
+        }
+        const range = document.createRange();
+        range.setStart(node, i);
+        range.setEnd(node, i + 1);
+        const rects = range.getClientRects();
+        if (!rects.length) continue;
+        const top = rects[0].top;
+        wordBroken ||= previous !== null && top > previous + 2;
+        width += rects[0].width;
+        previous = top;
+      }
+    }
+    endWord();
+    if (broken) splitCode.push(code.textContent.slice(0, 60));
+  }
+
+  // The SVG figures (charts and diagrams, drawn by matplotlib with text as
+  // glyph paths in groups id="text_N", each opened by a comment holding the
+  // text): measured as shown. Text in a diagram must be 8 px or more as
+  // shown; in any figure no two texts overlap and none is cut at the
+  // figure's edge; in a chart no note runs over the edge of its axes, and
+  // no series lies exactly under another (the legend would list a line the
+  // reader cannot see).
+  const MIN_TEXT_PX = 8;
+  const smallText = [], overlaps = [], outside = [], hidden = [];
+  const label = g => {
+    for (const node of g.childNodes)
+      if (node.nodeType === Node.COMMENT_NODE) return node.data.trim().slice(0, 40);
+    return g.id;
+  };
+  const box = e => e.getBoundingClientRect();
+  const intersect = (a, b) => Math.min(a.right, b.right) - Math.max(a.left, b.left) > 1 &&
+                              Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top) > 1;
+  const inside = (a, b) => a.left >= b.left - 1 && a.right <= b.right + 1 &&
+                           a.top >= b.top - 1 && a.bottom <= b.bottom + 1;
+  const holder = document.createElement("div");
+  holder.style.cssText = "position: absolute; left: 0; top: 0; visibility: hidden";
+  document.body.append(holder);
+  const figures = [...article.querySelectorAll("img")].filter(
+      i => /\.svg$/.test(i.currentSrc || i.src) && i.naturalWidth > 0);
+  const seen = new Set();
+  for (const image of figures) {
+    const name = (image.currentSrc || image.src).split("/").slice(-2).join("/");
+    // A chart has axes that frame its data and a legend naming each series;
+    // a diagram (docs/diagrams/) draws freely, its axes hidden.
+    const chart = name.startsWith("charts/");
+    const shown = image.getBoundingClientRect().width;
+    const key = `${name}@${Math.round(shown)}`;
+    if (seen.has(key) || shown === 0) continue;
+    seen.add(key);
+    const text = await (await fetch(image.currentSrc || image.src)).text();
+    holder.innerHTML = text.replace(/^[\s\S]*?(<svg)/, "$1");
+    const svg = holder.querySelector("svg");
+    if (!svg || !svg.viewBox.baseVal || !svg.viewBox.baseVal.width) continue;
+    const view = svg.viewBox.baseVal;
+    svg.setAttribute("width", shown);
+    svg.setAttribute("height", shown * view.height / view.width);
+    const scale = shown / view.width;  // displayed pixels per unit of the figure
+    const whole = box(svg);
+    const texts = [...svg.querySelectorAll('g[id^="text_"]')].filter(g => box(g).width > 0);
+    const boxes = texts.map(box);
+    for (const g of texts) {
+      const glyphs = g.querySelector('g[transform*="scale("]');
+      const size = glyphs && /scale\(\s*([\d.]+)/.exec(glyphs.getAttribute("transform"));
+      // matplotlib's glyphs are drawn at 100 units to the point of the font.
+      const px = size ? parseFloat(size[1]) * 100 * scale : box(g).height;
+      if (!chart && px < MIN_TEXT_PX) smallText.push(`${name}: "${label(g)}" at ${px.toFixed(1)} px`);
+      if (!inside(box(g), whole)) outside.push(`${name}: "${label(g)}" cut at the figure's edge`);
+    }
+    for (let i = 0; i < texts.length; ++i)
+      for (let j = i + 1; j < texts.length; ++j)
+        if (texts[i].contains(texts[j]) || texts[j].contains(texts[i])) continue;
+        else if (intersect(boxes[i], boxes[j]))
+          overlaps.push(`${name}: "${label(texts[i])}" and "${label(texts[j])}"`);
+    for (const axes of chart ? svg.querySelectorAll('g[id^="axes_"]') : []) {
+      const patch = axes.querySelector(':scope > g[id^="patch_"] > path');
+      if (!patch) continue;
+      const frame = box(patch);
+      // A note written inside the axes that runs over their edge (a title,
+      // wholly above them, is not one).
+      for (const g of axes.querySelectorAll(':scope > g[id^="text_"]')) {
+        const b = box(g);
+        if (b.width > 0 && intersect(b, frame) && !inside(b, frame))
+          outside.push(`${name}: "${label(g)}" runs over the edge of its axes`);
+      }
+      // A series drawn exactly over another: the same line (path) or the same
+      // markers (their positions), in another style. The first is hidden,
+      // though the legend lists it.
+      const drawn = new Map();
+      for (const g of axes.querySelectorAll(':scope > g[id^="line2d_"]')) {
+        const path = g.querySelector(":scope > path");
+        const marks = [...g.querySelectorAll("use")].map(
+            u => `${u.getAttribute("x")},${u.getAttribute("y")}`);
+        const shape = path ? path.getAttribute("d").replace(/\s+/g, " ").trim()
+                           : marks.length > 1 ? marks.join(" ") : "";
+        if (!shape || /#b0b0b0/.test(path ? path.getAttribute("style") : "")) continue;
+        const style = (path || g.querySelector("use") || g).getAttribute("style") || "";
+        // A dashed line over another lets the one under it show between its dashes.
+        if (/stroke-dasharray/.test(style)) {
+          drawn.set(shape, drawn.get(shape) || "dashed");
+          continue;
+        }
+        const colour = (/stroke: ?(#\w+)/.exec(style) || /fill: ?(#\w+)/.exec(style) || ["", "?"])[1];
+        if (drawn.has(shape) && drawn.get(shape) !== colour)
+          hidden.push(`${name}: a series in ${drawn.get(shape)} lies exactly under one in ${colour}`);
+        drawn.set(shape, colour);
+      }
+    }
+  }
+  holder.remove();
+
+  // The opening picture (the first raster figure of a lesson's page) must
+  // show its point at a glance: not too dark, not flat.
+  let opening = null;
+  const first = [...article.querySelectorAll("img")].find(
+      i => /\.(png|jpe?g)$/.test(i.currentSrc || i.src) && i.naturalWidth > 0 &&
+           !/\/obj\//.test(i.currentSrc || i.src));
+  if (first) {
+    const canvas = document.createElement("canvas");
+    canvas.width = first.naturalWidth;
+    canvas.height = first.naturalHeight;
+    const context = canvas.getContext("2d");
+    context.drawImage(first, 0, 0);
+    const pixels = context.getImageData(0, 0, canvas.width, canvas.height).data;
+    let sum = 0, squares = 0;
+    const count = pixels.length / 4;
+    for (let i = 0; i < pixels.length; i += 4) {
+      const luma = 0.2126 * pixels[i] + 0.7152 * pixels[i + 1] + 0.0722 * pixels[i + 2];
+      sum += luma;
+      squares += luma * luma;
+    }
+    const mean = sum / count;
+    opening = {name: (first.currentSrc || first.src).split("/").pop(), mean: mean,
+               spread: Math.sqrt(Math.max(0, squares / count - mean * mean))};
+  }
+  return {split_code: splitCode, small_text: smallText, overlaps: overlaps, outside: outside,
+          hidden: hidden, opening: opening};
+})()
+"""
+
 class Anchors(html.parser.HTMLParser):
     """The ids and names a page's HTML declares (what a #fragment can name)."""
 
@@ -275,6 +459,12 @@ def markdown_formulas(text: str) -> int:
     text = CODE_SPAN.sub("", text)
     display = len(DISPLAY.findall(text))
     return display + len(INLINE.findall(DISPLAY.sub("", text)))
+
+
+def page_words(text: str) -> int:
+    """A page's length as a reader meets it: its Markdown's words, the HTML
+    comments (value markers, snippet markers) left out."""
+    return len(COMMENT.sub("", text).split())
 
 
 def serve(folder: pathlib.Path) -> tuple:
@@ -410,11 +600,28 @@ def check_page(browser: Browser, page: str, options, base: str, cache: dict) -> 
     problems += [f"a code block cut at the right: {text}..." for text in facts["cut"]]
     problems += [f"a display formula wider than the page's column ({WIDTH} px "
                  f"window): {text}..." for text in facts["wide"]]
+    figures = browser.evaluate(FIGURE_FACTS)
+    problems += [f"inline code broken inside a word: {text}..." for text in figures["split_code"]]
+    problems += [f"figure text smaller than 8 px as shown: {text}" for text in figures["small_text"]]
+    problems += [f"figure text overlapping: {text}" for text in figures["overlaps"]]
+    problems += [f"figure text out of place: {text}" for text in figures["outside"]]
+    problems += [f"a chart's series hidden: {text}" for text in figures["hidden"]]
+    lesson = re.fullmatch(r"\d\d_\w+?(?<!_lab)\.html", page)
+    opening = figures["opening"]
+    if lesson and opening and (opening["mean"] < OPENING_MIN_MEAN
+                               or opening["spread"] < OPENING_MIN_SPREAD):
+        problems.append(f"the opening picture {opening['name']} is too dark or too flat to show "
+                        f"its point: mean {opening['mean']:.0f}, spread {opening['spread']:.0f} "
+                        f"(at least {OPENING_MIN_MEAN:.0f} and {OPENING_MIN_SPREAD:.0f} of 255)")
     if re.match(r"\d\d_", page) and not (facts["previous"] and facts["next"]):
         problems.append("a lesson without its previous and next links")
     if facts["unstyled"]:
         problems.append(f"{facts['unstyled']} formulas without KaTeX's stylesheet")
     source = options.docs / page.replace(".html", ".md")
+    words = page_words(source.read_text()) if source.is_file() else 0
+    if lesson and words > WORD_BUDGET:
+        problems.append(f"{words} words, over a lesson page's budget of {WORD_BUDGET} (move the "
+                        "lab's tables and method to its lab page)")
     expected = markdown_formulas(source.read_text()) if source.is_file() else 0
     if facts["formulas"] != expected or facts["marked"] != expected:
         problems.append(f"{facts['formulas']} formulas typeset ({facts['marked']} marked "

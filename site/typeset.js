@@ -44,8 +44,42 @@ function typesetFormulas() {
   }
 }
 
-if (document.readyState === "loading") {
-  document.addEventListener("DOMContentLoaded", typesetFormulas);
-} else {
+// Inline code breaks only at its spaces. A browser may end a line after any
+// hyphen, so `--tangents` could show as "-" at a line's end and "-tangents"
+// on the next, and a reader copying it gets neither. Each run of non-space
+// characters becomes a span that does not wrap (site.css: .code-word); the
+// spaces between them stay text, where a long span may still break. The
+// text, and so what a reader copies, is unchanged.
+function keepCodeWordsWhole() {
+  for (const code of document.querySelectorAll(".md-typeset code")) {
+    if (code.closest("pre")) continue;
+    for (const node of [...code.childNodes]) {
+      if (node.nodeType !== Node.TEXT_NODE) continue;
+      const pieces = node.data.split(/(\s+)/);
+      const fragment = document.createDocumentFragment();
+      for (const piece of pieces) {
+        if (piece === "") continue;
+        if (/^\s+$/.test(piece)) {
+          fragment.append(piece);
+        } else {
+          const word = document.createElement("span");
+          word.className = "code-word";
+          word.textContent = piece;
+          fragment.append(word);
+        }
+      }
+      node.replaceWith(fragment);
+    }
+  }
+}
+
+function typesetPage() {
+  keepCodeWordsWhole();
   typesetFormulas();
+}
+
+if (document.readyState === "loading") {
+  document.addEventListener("DOMContentLoaded", typesetPage);
+} else {
+  typesetPage();
 }
