@@ -14,7 +14,9 @@ import argparse
 import csv
 import math
 import pathlib
+import string
 import sys
+import textwrap
 
 
 def number(text):
@@ -72,6 +74,59 @@ def write_table(rows, columns, path, front_keys, key, fronts=True):
     path.write_text("\n".join(lines) + "\n")
 
 
+def read_table(path):
+    """The rows of a table this script wrote (its first Markdown table), as a
+    CSV's. Its best trade-off marks are kept, and the chart marks those rows:
+    found again from the table's rounded numbers, they could differ."""
+    header, rows = None, []
+    for line in path.read_text().splitlines():
+        if not line.startswith("|"):
+            if header:
+                break
+            continue
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if header is None:
+            header = cells
+        elif not set(line) <= set("|-: "):
+            rows.append(dict(zip(header, cells)))
+    if not rows:
+        sys.exit(f"{path}: no table")
+    return rows
+
+
+def front_of(rows, points, spreads):
+    """The indices of the best trade-offs among rows, fastest first: as the
+    table marks them when the chart is drawn from its table, else found."""
+    if rows and MARK in rows[0]:
+        return sorted((i for i, r in enumerate(rows) if r[MARK] == "yes"), key=lambda i: points[i][0])
+    return pareto_front(points, spreads)
+
+
+MARK = "best trade-off"
+
+
+class _NameFormatter(string.Formatter):
+    """--label-format's and --series-format's fields are a row's columns; the
+    spec `first` keeps a value's text before its first comma ("ssaa, grid,
+    +3 stops" as "ssaa"), `bare` its text before a bracket ("one bounce
+    (roughness 0.5)" as "one bounce", where each panel is one roughness)."""
+
+    def format_field(self, value, spec):
+        if spec == "first":
+            return value.split(",")[0].strip()
+        if spec == "bare":
+            return value.split(" (")[0].strip()
+        return super().format_field(value, spec)
+
+
+def point_name(row, columns, options):
+    """A point's (or a bar's) name: its label columns' values, or
+    --label-format filled from the row."""
+    if options.label_format:
+        return _NameFormatter().format(options.label_format, **row)
+    return " ".join(row[c] for c in columns)
+
+
 def row_key(row, label):
     return tuple(row[c] for c in label)
 
@@ -115,7 +170,9 @@ def merge_close_labels(axes, labels, marks):
                   sum(marks[j][1] for j in cluster) / len(cluster))
         for j in cluster:
             labels[j].set_visible(False)
-        shown.append(axes.annotate("left to right:\n" + "\n".join(names),
+        # One name for all of them (the same method in each group): said once.
+        text = names[0] if len(set(names)) == 1 else "left to right:\n" + "\n".join(names)
+        shown.append(axes.annotate(text,
                                    axes.transData.inverted().transform(middle),
                                    textcoords="offset points", xytext=(6, 4),
                                    fontsize=labels[cluster[0]].get_fontsize(), arrowprops=LEADER))
@@ -139,7 +196,10 @@ def spread_labels(figure, axes, labels, points, avoid=()):
                   (6, 16, "left"), (-6, 16, "right"), (6, -24, "left"), (-6, -24, "right"),
                   (0, 28, "center"), (0, -36, "center"),
                   (18, 30, "left"), (-18, 30, "right"), (18, -42, "left"), (-18, -42, "right"),
-                  (30, 4, "left"), (-30, 4, "right")]
+                  (30, 4, "left"), (-30, 4, "right"),
+                  # farther out, for a list of several points where the near places are taken
+                  (40, 40, "left"), (-40, 40, "right"), (40, -56, "left"), (-40, -56, "right"),
+                  (64, 12, "left"), (-64, 12, "right"), (0, 64, "center"), (0, -76, "center")]
     NEAR = 10  # the first ten sit beside their point; the others get a leader line
 
     def overlaps(a, b):
@@ -157,7 +217,7 @@ def spread_labels(figure, axes, labels, points, avoid=()):
             box = (extent.x0, extent.y0, extent.x1, extent.y1)
             score = sum(overlaps(box, other) for other in placed + mark_boxes)
             if box[0] < inside.x0 or box[2] > inside.x1 or box[1] < inside.y0 or box[3] > inside.y1:
-                score += 1.5  # worse than touching one label: a label off the chart is lost
+                score += 100  # a label over the axes' edge sits on the ticks or is cut off
             if best_score is None or score < best_score:
                 best, best_score = (dx, dy, align, box), score
             if score == 0:
@@ -170,17 +230,81 @@ def spread_labels(figure, axes, labels, points, avoid=()):
         placed.append(box)
 
 
+def place_point_labels(figure, annotations):
+    """Point labels of lines (a sample count by each point) moved apart: each
+    to the first of a few offsets where it overlaps no label placed before
+    it and stays inside its axes; a label whose text a placed one already
+    shows within a few pixels is dropped (two lines' points with the same
+    count, side by side, need the number once)."""
+    if not annotations:
+        return
+    figure.canvas.draw()
+    renderer = figure.canvas.get_renderer()
+    offsets = [(3, 3, "left"), (3, -9, "left"), (-3, 3, "right"), (-3, -9, "right"),
+               (0, 8, "center"), (0, -14, "center"), (6, -3, "left"), (-6, -3, "right")]
+    placed = []  # (box, text)
+
+    def overlaps(a, b):
+        return not (a[2] <= b[0] or b[2] <= a[0] or a[3] <= b[1] or b[3] <= a[1])
+
+    for axes, label in annotations:
+        frame = axes.get_window_extent(renderer)
+        best = None
+        for dx, dy, align in offsets:
+            label.set_position((dx, dy))
+            label.set_horizontalalignment(align)
+            e = label.get_window_extent(renderer)
+            box = (e.x0, e.y0, e.x1, e.y1)
+            score = sum(overlaps(box, other) for other, _ in placed)
+            if box[0] < frame.x0 or box[2] > frame.x1 or box[1] < frame.y0 or box[3] > frame.y1:
+                score += 100
+            if best is None or score < best[0]:
+                best = (score, dx, dy, align, box)
+            if score == 0:
+                break
+        score, dx, dy, align, box = best
+        twin = any(text == label.get_text() and overlaps(box, other) for other, text in placed)
+        if score and twin:
+            label.set_visible(False)
+            continue
+        label.set_position((dx, dy))
+        label.set_horizontalalignment(align)
+        placed.append((box, label.get_text()))
+
+
 def finish(figure, axes, options, rows, before_save=None):
     """Scales, ticks and axis labels of each of `axes` (one or a list: the
     panels, which share their scales), then the SVG."""
     for one in axes if isinstance(axes, list) else [axes]:
         scale_axes(one, options, rows)
     figure.tight_layout()
+    for one in axes if isinstance(axes, list) else [axes]:
+        fit_notes(figure, one)
     if before_save:
         before_save()
     options.svg.parent.mkdir(parents=True, exist_ok=True)
     figure.savefig(options.svg, metadata={"Date": None})
     print(f"wrote {options.svg}")
+
+
+def fit_notes(figure, axes):
+    """Widens a bar chart's x range until the note after each bar ends inside
+    the axes (at the right edge it ran over the frame and off the figure)."""
+    notes = getattr(axes, "bar_notes", None)
+    if not notes:
+        return
+    for _ in range(12):
+        figure.canvas.draw()
+        renderer = figure.canvas.get_renderer()
+        right = axes.get_window_extent(renderer).x1
+        over = max(n.get_window_extent(renderer).x1 for n in notes) - right
+        if over <= 0:
+            return
+        low, high = axes.get_xlim()
+        if axes.get_xscale() == "log":
+            axes.set_xlim(low, high * 1.15)
+        else:
+            axes.set_xlim(low, high + (high - low) * 0.08)
 
 
 def tick_label(value):
@@ -224,9 +348,10 @@ def scale_axes(axes, options, rows):
         else:
             axes.set_yscale("log")
             plain_log_ticks(axes.yaxis, min(positive), max(positive))
-    axes.set_xlabel(options.xlabel or options.x, fontsize=8 if options.panel else None)
+    # A long axis label in two lines: in one it ran past the figure's edge.
+    axes.set_xlabel(textwrap.fill(options.xlabel or options.x, 90), fontsize=8 if options.panel else None)
     if not options.bars:  # (bars are named on the y axis itself)
-        axes.set_ylabel(options.ylabel or options.y, fontsize=8 if options.panel else None)
+        axes.set_ylabel(textwrap.fill(options.ylabel or options.y, 70), fontsize=8 if options.panel else None)
     axes.grid(True, which="both", alpha=0.3)
 
 
@@ -245,6 +370,15 @@ def panel_grid(plt, count, width, height, columns=2):
     return figure, all_axes[:count], all_axes[count:]
 
 
+def legend_handle(line):
+    """A line's legend entry in its own style, not the short dashes it is
+    drawn in where it lies on another line."""
+    from matplotlib.lines import Line2D
+
+    return Line2D([], [], color=line.get_color(), marker=line.get_marker(), markersize=3,
+                  linestyle=getattr(line, "legend_style", line.get_linestyle()))
+
+
 def draw_lines(plt, rows, options):
     """One line per series value (colour), and per style value or y column
     (dash pattern): --y a,b draws each column as its own line. With --panel,
@@ -252,6 +386,10 @@ def draw_lines(plt, rows, options):
     that would pass twice through one x (rows of different scenes, say, in one
     series) is refused: its zig-zag would join points that do not belong
     together."""
+    table_rows = rows  # the table keeps the lab's own names
+    if options.series and options.series_format:  # the lines named by a format of their rows
+        rows = [dict(r, **{options.series: _NameFormatter().format(options.series_format, **r)})
+                for r in rows]
     series = list(dict.fromkeys(r[options.series] for r in rows)) if options.series else [None]
     y_columns = options.y.split(",")
     if options.style and len(y_columns) > 1:
@@ -266,8 +404,10 @@ def draw_lines(plt, rows, options):
         figure, single = plt.subplots(figsize=(7.5, 5))
         all_axes, spares = [single], []
     dashes = ["-", (0, (6, 3)), ":", "-."]
+    point_labels = []  # (axes, annotation): placed apart once the chart is laid out
     for axes, (panel, panel_rows) in zip(all_axes, panels.items()):
         flat = []  # lines that are zero everywhere: named in a note, not drawn on top of each other
+        drawn = {}  # a line's points -> how many lines of this axes have them
         for i, name in enumerate(series):
             for j, (style, y) in enumerate((s, y) for s in styles for y in y_columns):
                 members = [r for r in panel_rows if (name is None or r[options.series] == name)
@@ -286,15 +426,26 @@ def draw_lines(plt, rows, options):
                 if all(p[1] == 0 for p in points):
                     flat.append(label)
                     continue
-                axes.plot(xs, [p[1] for p in points], linestyle=dashes[j % len(dashes)],
-                          color=f"C{i}" if len(series) > 1 or len(y_columns) == 1 else f"C{j}",
-                          marker="o", markersize=3, label=label)
+                # A line with the same points as one drawn before would hide
+                # it, though the legend names both: the k-th such line is
+                # drawn in short dashes, each its own third of every 9 points
+                # of length, so that each colour shows in turn.
+                same = drawn.get(tuple(points), 0)
+                drawn[tuple(points)] = same + 1
+                style_of_line = dashes[j % len(dashes)] if not same else (3 * ((same - 1) % 2), (3, 6))
+                (line,) = axes.plot(xs, [p[1] for p in points], linestyle=style_of_line,
+                                    color=f"C{i}" if len(series) > 1 or len(y_columns) == 1 else f"C{j}",
+                                    marker="o", markersize=3, label=label)
+                line.legend_style = dashes[j % len(dashes)]  # the legend shows the line's own style
                 if options.point_labels:  # each point named by its value of that column (e.g. segments)
                     for r in members:
-                        axes.annotate(r[options.point_labels], (number(r[options.x]), number(r[y])),
-                                      textcoords="offset points", xytext=(3, 3), fontsize=6,
-                                      color=f"C{i}")
-        if flat:
+                        point_labels.append((axes, axes.annotate(
+                            r[options.point_labels], (number(r[options.x]), number(r[y])),
+                            textcoords="offset points", xytext=(3, 3), fontsize=6, color=f"C{i}")))
+        # Two names a line: a long title would make the legend wider than the chart.
+        axes.flat_note = ("zero everywhere (not drawn):\n" + "\n".join(
+            ", ".join(flat[k:k + 2]) for k in range(0, len(flat), 2))) if flat else None
+        if flat and options.panel:  # (a single chart's legend carries it as its title)
             axes.text(0.01, 0.99, "zero everywhere (not drawn):\n" + "\n".join(flat),
                       transform=axes.transAxes, fontsize=6.5, va="top", ha="left", color="0.3")
         if options.panel:
@@ -306,7 +457,7 @@ def draw_lines(plt, rows, options):
         named = {}
         for axes in all_axes:
             for handle, label in zip(*axes.get_legend_handles_labels()):
-                named.setdefault(label, handle)
+                named.setdefault(label, legend_handle(handle))
         if spares:
             spares[0].legend(named.values(), named.keys(), fontsize=8, handlelength=4, loc="center")
         else:
@@ -314,13 +465,21 @@ def draw_lines(plt, rows, options):
                           loc="lower center")
     else:
         all_axes[0].set_title(options.title, fontsize=10)
-        all_axes[0].legend(fontsize=7, ncol=2, handlelength=4)  # long enough handles to show the dashes
-    finish(figure, all_axes if options.panel else all_axes[0], options, rows,
-           (lambda: figure.subplots_adjust(bottom=0.2)) if options.panel and not spares else None)
+        handles, names = all_axes[0].get_legend_handles_labels()
+        legend = all_axes[0].legend([legend_handle(h) for h in handles], names, fontsize=7, ncol=2,
+                                    handlelength=4,  # long enough handles to show the dashes
+                                    title=all_axes[0].flat_note, title_fontsize=6.5)
+        legend.get_title().set_color("0.3")
+    def before_save():
+        if options.panel and not spares:
+            figure.subplots_adjust(bottom=0.2)
+        place_point_labels(figure, point_labels)
+
+    finish(figure, all_axes if options.panel else all_axes[0], options, rows, before_save)
     if options.table:
-        columns = options.columns.split(",") if options.columns else list(rows[0].keys())
+        columns = options.columns.split(",") if options.columns else list(table_rows[0].keys())
         lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
-        for row in rows:
+        for row in table_rows:
             lines.append("| " + " | ".join(format_cell(row[c]) for c in columns) + " |")
         options.table.write_text("\n".join(lines) + "\n")
         print(f"wrote {options.table}")
@@ -353,7 +512,7 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys, labelled=No
         for row, (x, y) in zip(members, points):
             if labelled and not labelled(row):
                 continue
-            labels.append(axes.annotate(" ".join(row[c] for c in shown), (x, y),
+            labels.append(axes.annotate(point_name(row, shown, options), (x, y),
                                         textcoords="offset points", xytext=(6, 4),
                                         fontsize=7 if options.panel else 8, arrowprops=LEADER))
             labels[-1].arrow_patch.set_visible(False)  # shown if the label is set apart
@@ -363,7 +522,7 @@ def scatter_with_fronts(axes, rows, options, label, key, front_keys, labelled=No
                           xerr=[[max(p[0] - lo, 0) for p, (lo, hi) in zip(points, spreads)],
                                 [max(hi - p[0], 0) for p, (lo, hi) in zip(points, spreads)]],
                           fmt="none", ecolor=colour, elinewidth=0.8, alpha=0.6, zorder=2)
-        front = pareto_front(points, spreads)
+        front = front_of(members, points, spreads)
         front_keys.update(key(members[i]) for i in front)
         axes.plot([points[i][0] for i in front], [points[i][1] for i in front], linestyle="--",
                   color=colour, linewidth=1, zorder=2)
@@ -406,7 +565,7 @@ def bars_with_fronts(axes, rows, options, label, key, front_keys):
     for row in rows:
         groups.setdefault(row[options.group] if options.group else "", []).append(row)
     for members in groups.values() if not options.no_fronts else []:
-        front_keys.update(key(members[i]) for i in pareto_front(*points_and_spreads(members, options)))
+        front_keys.update(key(members[i]) for i in front_of(members, *points_and_spreads(members, options)))
     shown = [c for c in label if c not in (options.group, options.panel)]
     positions = list(range(len(rows)))[::-1]  # the first row at the top
     times = [number(r[options.x]) for r in rows]
@@ -424,11 +583,12 @@ def bars_with_fronts(axes, rows, options, label, key, front_keys):
     ends = times  # the text goes after the bar, or after its whisker
     if options.x_spread:
         ends = [max(t, number(r[options.x_spread.split(",")[1]])) for t, r in zip(times, rows)]
-    for position, end, row in zip(positions, ends, rows):
-        axes.annotate(f"{options.y_short} {number(row[options.y]):g}", (end, position),
-                      textcoords="offset points", xytext=(5, -3), fontsize=7, color="0.25")
+    notes = [axes.annotate(f"{options.y_short} {number(row[options.y]):g}", (end, position),
+                           textcoords="offset points", xytext=(5, -3), fontsize=7, color="0.25")
+             for position, end, row in zip(positions, ends, rows)]
+    axes.bar_notes = notes  # finish() widens the axes until every note fits inside
     axes.set_yticks(positions)
-    axes.set_yticklabels([" ".join(r[c] for c in shown) for r in rows], fontsize=7)
+    axes.set_yticklabels([point_name(r, shown, options) for r in rows], fontsize=7)
     axes.set_ylim(-0.6, len(rows) - 0.4)
     return [], []
 
@@ -440,8 +600,13 @@ def main():
     parser.add_argument("--y", required=True, help="error column")
     parser.add_argument("--label", help="column(s) naming a point, comma-separated (scatter)")
     parser.add_argument("--series", help="draw lines instead: one line per value of this column")
+    parser.add_argument("--series-format", metavar="FORMAT",
+                        help="with --series: name each line by this format of its row (as --label-format)")
     parser.add_argument("--style", help="with --series: line style per value of this column")
     parser.add_argument("--point-labels", help="with --series: name each point by this column's value")
+    parser.add_argument("--label-format", metavar="FORMAT",
+                        help="name each point by this Python format of its row's columns, e.g. "
+                             "'{levels} {size}/{samples}' ({column:first}: its text before a comma)")
     parser.add_argument("--group", help="column whose values get their own colour and front")
     parser.add_argument("--panel", help="column whose values get a small chart each, with its own fronts")
     parser.add_argument("--xlabel", default=None)
@@ -487,11 +652,20 @@ def main():
     matplotlib.rcParams["svg.hashsalt"] = "rasterlab"  # stable ids: a redraw of the same data is the same file
     import matplotlib.pyplot as plt
 
-    with options.csv.open() as f:
-        all_rows = list(csv.DictReader(f))
+    if options.csv.suffix == ".md":
+        # Redrawn from the chart's own table (the `replot` target): no lab run.
+        # The table holds the rows chosen when it was written, so a --where on
+        # a column it leaves out is already applied; it is not written again.
+        all_rows = read_table(options.csv)
+        options.table = None
+    else:
+        with options.csv.open() as f:
+            all_rows = list(csv.DictReader(f))
     rows = all_rows
     for condition in options.where:  # COLUMN=VALUE, or COLUMN!=VALUE to leave those rows out
         column, _, value = condition.partition("=")
+        if rows and column.rstrip("!") not in rows[0] and options.csv.suffix == ".md":
+            continue
         if column.endswith("!"):
             rows = [r for r in rows if r.get(column[:-1]) != value]
         else:
