@@ -58,6 +58,7 @@ import pathlib
 import sys
 
 import matplotlib
+import matplotlib.text
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -66,7 +67,30 @@ from matplotlib.patches import Polygon, Rectangle  # noqa: E402
 INK, LINE, ACCENT, SOFT = "#222222", "#2060c0", "#d04020", "#e8eef8"
 
 
+# The docs site's column is about 615 px wide at a 1280 px window: a figure
+# wider than that is shrunk to it, and its text with it. Text must stay 8 px
+# or more as shown (site/check_site.py fails a diagram whose text is not):
+# a figure raises any smaller font to its floor before it is laid out.
+COLUMN_PX, MIN_TEXT_PX = 615, 8.4
+
+
+def smallest_font(figure):
+    """The least font size, in points, that shows as MIN_TEXT_PX on the page."""
+    width_in = figure.get_figwidth()
+    shown_px = min(width_in * 96, COLUMN_PX)  # an SVG's point is 96/72 CSS pixels
+    return MIN_TEXT_PX * width_in * 72 / shown_px
+
+
 def save(figure, out, name):
+    floor = smallest_font(figure)
+    for text in figure.findobj(matplotlib.text.Text):
+        if text.get_text() and text.get_fontsize() < floor:
+            text.set_fontsize(floor)
+    for axes in figure.axes:  # tick labels are made again when drawn: their size is a setting
+        for axis in ("x", "y"):
+            labels = getattr(axes, f"get_{axis}ticklabels")()
+            if labels and min(label.get_fontsize() for label in labels) < floor:
+                axes.tick_params(axis=axis, labelsize=floor)
     figure.tight_layout()
     figure.savefig(out / name, metadata={"Date": None})
     plt.close(figure)
@@ -89,35 +113,40 @@ def pixel_grid(axes, width, height):
 
 # The 18-byte TGA header as tga.cpp reads it: (first byte, length, field).
 TGA_HEADER = [(0, 1, "ID\nlength"), (1, 1, "map\ntype"), (2, 1, "image\ntype"), (3, 5, "colour map\n(unused)"),
-              (8, 4, "x, y origin\n(unused)"), (12, 2, "width"), (14, 2, "height"), (16, 1, "bits per\npixel"),
-              (17, 1, "descrip-\ntor")]
+              (8, 4, "x, y origin\n(unused)"), (12, 2, "width"), (14, 2, "height"), (16, 1, "pixel\ndepth"),
+              (17, 1, "image\ndescr.")]
 
 
 def tga_layout(out):
-    figure, axes = plt.subplots(figsize=(9, 3.6))
+    figure, axes = plt.subplots(figsize=(9, 4.4))
+    byte = 1.8  # width of a byte: the header in two rows, so that a byte's box holds its name
     for first, length, label in TGA_HEADER:
-        axes.add_patch(Rectangle((first, 2), length, 1, fill=True, color=SOFT, ec=LINE))
-        axes.text(first + length / 2, 2.5, label, ha="center", va="center", fontsize=7)
-        axes.text(first, 3.1, str(first), fontsize=6, color="#777777")
-    axes.text(18, 3.1, "18", fontsize=6, color="#777777")
-    axes.add_patch(Rectangle((18, 2), 4, 1, fill=False, ec="#999999", ls="--"))
-    axes.text(20, 2.5, "ID, palette,\nthen pixels", ha="center", va="center", fontsize=7, color="#555555")
-    axes.text(0, 3.5, "Header: 18 bytes, little-endian. Descriptor bit 5: top row first; bit 4: right to left.",
+        row = 0 if first < 12 else 1
+        x, y = (first - 12 * row) * byte, 3.4 - 1.7 * row
+        axes.add_patch(Rectangle((x, y), length * byte, 1, fill=True, color=SOFT, ec=LINE))
+        axes.text(x + length * byte / 2, y + 0.5, label, ha="center", va="center", fontsize=8)
+        axes.text(x, y + 1.1, str(first), fontsize=7, color="#777777")
+    axes.text(6 * byte, 2.8, "18", fontsize=7, color="#777777")
+    axes.add_patch(Rectangle((6 * byte, 1.7), 4.4, 1, fill=False, ec="#999999", ls="--"))
+    axes.text(6 * byte + 2.2, 2.2, "ID, palette,\nthen pixels", ha="center", va="center", fontsize=8,
+              color="#555555")
+    axes.text(0, 4.95, "Header: 18 bytes, little-endian. Descriptor bit 5: top row first; bit 4: right to left.",
               fontsize=8)
     # An RLE stream: a run packet and a raw packet, as the encoder writes them.
-    packets = [("1 | 0000011", "run of 4:\nheader, then 1 pixel", 1, 3), ("0 | 0000010", "raw, 3 pixels:\nheader, then 3 pixels", 1, 9)]
+    packets = [("1 | 0000011", "run of 4:\nheader, then 1 pixel", 3), ("0 | 0000010", "raw, 3 pixels:\nheader, then 3 pixels", 9)]
     x = 0.0
-    for bits, label, header_len, data_len in packets:
-        axes.add_patch(Rectangle((x, 0), header_len * 1.6, 1, color="#f4c7b8", ec=ACCENT))
-        axes.text(x + 0.8, 0.5, bits, ha="center", va="center", fontsize=6.5)
-        axes.add_patch(Rectangle((x + 1.6, 0), data_len * 0.6, 1, color=SOFT, ec=LINE))
-        axes.text(x + 1.6 + data_len * 0.3, 0.5, "B G R" if data_len == 3 else "B G R  B G R  B G R",
-                  ha="center", va="center", fontsize=6.5)
-        axes.text(x + 0.1, -0.45, label, fontsize=7, va="center")
-        x += 1.6 + data_len * 0.6 + 1.0
-    axes.text(0, 1.3, "RLE packets (24-bit): bit 7 of the header byte = run, bits 0-6 = count - 1", fontsize=8)
-    axes.set_xlim(-0.3, 22.5)
-    axes.set_ylim(-1.0, 3.9)
+    head = 3.0
+    for bits, label, data_len in packets:
+        axes.add_patch(Rectangle((x, -0.6), head, 1, color="#f4c7b8", ec=ACCENT))
+        axes.text(x + head / 2, -0.1, bits, ha="center", va="center", fontsize=8)
+        axes.add_patch(Rectangle((x + head, -0.6), data_len * 0.75, 1, color=SOFT, ec=LINE))
+        axes.text(x + head + data_len * 0.375, -0.1, "B G R" if data_len == 3 else "B G R  B G R  B G R",
+                  ha="center", va="center", fontsize=8)
+        axes.text(x + 0.1, -1.2, label, fontsize=8, va="center")
+        x += head + data_len * 0.75 + 1.2
+    axes.text(0, 0.75, "RLE packets (24-bit): bit 7 of the header byte = run, bits 0-6 = count - 1", fontsize=8)
+    axes.set_xlim(-0.3, 22.0)
+    axes.set_ylim(-1.8, 5.3)
     axes.axis("off")
     save(figure, out, "00_tga_layout.svg")
 
@@ -664,7 +693,7 @@ def two_passes(out):
         axes.plot([eye[0], target[0]], [eye[1], target[1]], color=LINE, lw=0.8, ls="--")
     axes.plot([eye[0], p[0]], [eye[1], p[1]], color=LINE, lw=1)
     axes.text(-3.3, 2.2, "pass 2: the camera sees P\nand looks it up in the map", color=LINE, fontsize=8)
-    axes.text(2.4, 0.7, "pass 1: depth from the light\n(its orthographic box, dashed)", color=ACCENT, fontsize=8)
+    axes.text(2.4, 0.35, "pass 1: depth from the light\n(its orthographic box, dashed)", color=ACCENT, fontsize=8)
     axes.set_xlim(-3.4, 4.8)
     axes.set_ylim(-0.6, 5.0)
     axes.set_aspect("equal")
@@ -828,9 +857,9 @@ def pcf_kernel(out):
     grid.text(u - 0.08, v + 0.1, "(u, v)", fontsize=8, color=LINE, ha="right",
               bbox=dict(fc="white", ec="none", pad=0.5))
     grid.set_title(f"3x3 PCF at (u, v): {lit} of 9 texels say lit -> {lit / 9:.2f}", fontsize=8)
-    grid.text(2.5, -0.45, "grey: the map's depth is nearer than P (a caster: shadowed); dashed: its edge",
-              fontsize=7, ha="center")
-    bare(grid, (-0.1, 5.1), (-0.7, 5.1))
+    grid.text(2.5, -0.3, "grey: the map's depth is nearer than P\n(a caster: shadowed); dashed: its edge",
+              fontsize=7, ha="center", va="top")
+    bare(grid, (-0.1, 5.1), (-1.3, 5.1))
     xs = [i / 50 for i in range(-150, 151)]
     hard = [1.0 if x < 0 else 0.0 for x in xs]
     pcf3 = []
@@ -1176,8 +1205,10 @@ def srgb_entry(out):
     # Left: the two gathers of lesson 06's search (the second waits for the
     # first), and the one gather of a folded entry. Right: one slice of
     # [0, 1) with its step, the worked example of docs/12_fast.md.
-    figure, (left, right) = plt.subplots(1, 2, figsize=(8.8, 3.4),
-                                         gridspec_kw={"width_ratios": [1.25, 1]})
+    # One above the other: side by side, at the page's width, the boxes were
+    # too narrow for their names at a readable size.
+    figure, (left, right) = plt.subplots(2, 1, figsize=(7.2, 5.8),
+                                         gridspec_kw={"height_ratios": [1.25, 1]})
 
     def box(x, y, w, text, colour=SOFT):
         left.add_patch(Rectangle((x, y), w, 0.55, fc=colour, ec=INK, lw=0.8))
@@ -1229,7 +1260,7 @@ def srgb_entry(out):
                ha="center", fontsize=7.5)
     right.annotate("", xy=(within, -0.05), xytext=(0.5, -0.55),
                    arrowprops=dict(arrowstyle="->", color=INK, lw=0.8))
-    right.set_xlim(-0.15, 1.15)
+    right.set_xlim(-0.6, 1.6)
     right.set_ylim(-1.1, 1.4)
     right.axis("off")
     right.set_title("slice 876 of [0, 1): one step inside it", fontsize=9)
@@ -1539,13 +1570,16 @@ def lobe_lean(out):
         r_angle = -v_angle
         axes.plot([-1.1, 1.1], [0, 0], color=INK, lw=1.2)
         axes.annotate("", (0, 1.05), (0, 0), arrowprops=dict(arrowstyle="->", color=INK, lw=1))
-        axes.text(0.03, 1.0, "n", fontsize=8)
         axes.annotate("", (math.sin(v_angle), math.cos(v_angle)), (0, 0),
                       arrowprops=dict(arrowstyle="->", color=INK, lw=1))
-        axes.text(math.sin(v_angle) - 0.02, math.cos(v_angle) + 0.03, "v", fontsize=8, ha="right")
         axes.annotate("", (math.sin(r_angle), math.cos(r_angle)), (0, 0),
                       arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.4, ls="--"))
-        axes.text(math.sin(r_angle) + 0.02, math.cos(r_angle), "r", fontsize=8, color=ACCENT)
+        if view_degrees == 0:  # v, n and r are one arrow: one name
+            axes.text(0.05, 1.0, "n = v = r", fontsize=8)
+        else:
+            axes.text(0.03, 1.0, "n", fontsize=8)
+            axes.text(math.sin(v_angle) - 0.02, math.cos(v_angle) + 0.03, "v", fontsize=8, ha="right")
+            axes.text(math.sin(r_angle) + 0.02, math.cos(r_angle), "r", fontsize=8, color=ACCENT)
         axes.plot([0, 0.95 * math.sin(best)], [0, 0.95 * math.cos(best)], color=LINE, lw=1, ls=":")
         axes.set_title(f"seen {view_degrees}° from n: r is {abs(math.degrees(r_angle)):.0f}° from n,\n"
                        f"the lobe's mean {abs(math.degrees(best)):.0f}° (dotted)", fontsize=8)
@@ -1779,7 +1813,7 @@ def ao_kernels(out):
                    (-0.45, 1.6), (0.1, 1.25), fontsize=7.5, arrowprops=dict(arrowstyle="->", lw=0.8))
     right.set_title("the range check: no halo from a far edge", fontsize=9)
     right.set_xlim(-1.7, 1.9)
-    right.set_ylim(-0.5, 3.2)
+    right.set_ylim(-0.75, 3.2)  # the whole of the dashed ball
     right.set_aspect("equal")
     right.axis("off")
     save(figure, out, "10_kernels.svg")
