@@ -2,6 +2,9 @@
 // e.g. a lesson's TGA output to the PNG that its doc page shows.
 #include "rasterlab/cli.hpp"
 
+#include <algorithm>
+#include <cstdint>
+
 #include "rasterlab/image_io.hpp"
 #include "rasterlab/main_guard.hpp"
 
@@ -24,6 +27,12 @@ int main(int argc, char** argv) {
                  "shows when a bottom-row-first frame is sent as it is");
     app.add_option("--crop", crop, "Keep only the rectangle X Y W H (X, Y: its bottom-left pixel)")
         ->expected(4);
+    std::vector<int> stretch;
+    app.add_option("--stretch", stretch,
+                   "Spread the channel values LO..HI over 0..255, those outside clipped: a "
+                   "difference in the dark made visible (the figure's caption must say so)")
+        ->expected(2)
+        ->check(rl::range(0, 255));
     return app.run(argc, argv, "imgconv", [&] {
         rl::Image image = rl::load_image(input);
         if (!crop.empty()) {
@@ -37,6 +46,21 @@ int main(int argc, char** argv) {
             for (int y = 0; y < h; ++y)
                 for (int x = 0; x < w; ++x) part.set(x, y, image.get(x0 + x, y0 + y));
             image = part;
+        }
+        if (!stretch.empty()) {
+            const int lo = stretch[0], hi = stretch[1];
+            if (lo >= hi)
+                throw std::invalid_argument("--stretch " + std::to_string(lo) + " " +
+                                            std::to_string(hi) + ": LO must be below HI");
+            const auto spread = [lo, hi](std::uint8_t v) {
+                return static_cast<std::uint8_t>(
+                    std::clamp((v - lo) * 255 / (hi - lo), 0, 255));
+            };
+            for (int y = 0; y < image.height(); ++y)
+                for (int x = 0; x < image.width(); ++x) {
+                    const rl::Rgba c = image.get(x, y);
+                    image.set(x, y, {spread(c.r), spread(c.g), spread(c.b), c.a});
+                }
         }
         if (flip) image.flip_vertically();
         rl::Image scaled(image.width() * scale, image.height() * scale);
