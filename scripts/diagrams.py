@@ -23,6 +23,8 @@ hand: diagrams.py OUT_DIR (the `diagrams` target writes docs/diagrams/).
   08_light_box_fit.svg       the light's box fitted to the scene or to the view: texel size
   08_normal_offset.svg       the point looked up moved along its normal: acne gone, by a texel
   08_pcf_kernel.svg          a 3x3 kernel's answers around (u, v), and the edge they soften
+  09_cosine_sampling.svg     uniform points on the disc lifted onto the hemisphere: directions drawn
+                             as the cosine (Malley's method)
   09_cube_faces.svg          a direction's face and place, seen from above; the six faces unfolded
   09_latlong.svg             the lat-long map: longitude across, latitude up, the pole's row, the seam
   09_reflect_refract.svg     reflection and refraction at glass, with Snell's angles and Fresnel's share
@@ -58,6 +60,7 @@ import pathlib
 import sys
 
 import matplotlib
+import matplotlib.patches
 import matplotlib.text
 
 matplotlib.use("Agg")
@@ -1856,6 +1859,44 @@ def ao_horizon(out):
     save(figure, out, "10_horizon.svg")
 
 
+def cosine_sampling(out):
+    """Malley's method: points spread evenly over the unit disc (r = sqrt(u),
+    phi = 2 pi v), lifted straight up onto the hemisphere, are directions
+    whose density is cos(theta) / pi: crowded about the normal, sparse at
+    the horizon. The same sampling as irradiance_monte_carlo."""
+    figure, (disc, side) = plt.subplots(1, 2, figsize=(7.2, 3.4))
+    count = 96
+    points = []
+    for i in range(count):
+        u, v = (i + 0.5) / count, int(format(i, "07b")[::-1], 2) / 128  # a Hammersley set
+        r, phi = math.sqrt(u), 2 * math.pi * v
+        points.append((r * math.cos(phi), r * math.sin(phi)))
+    disc.add_patch(plt.Circle((0, 0), 1, fill=False, color=INK, lw=1))
+    disc.plot([p[0] for p in points], [p[1] for p in points], "o", ms=3, color=LINE)
+    disc.set_title("seen from above: even over the disc\nr = sqrt(u), phi = 2 pi v", fontsize=9)
+    disc.set_xlim(-1.15, 1.15)
+    disc.set_ylim(-1.15, 1.15)
+    disc.set_aspect("equal")
+    disc.axis("off")
+    # Side view: the points with y near 0 (a slice), lifted to z = sqrt(1 - r^2).
+    side.add_patch(matplotlib.patches.Arc((0, 0), 2, 2, theta1=0, theta2=180, color=INK, lw=1))
+    side.plot([-1.15, 1.15], [0, 0], color=INK, lw=1.2)
+    for x, y in points:
+        if abs(y) < 0.12:
+            z = math.sqrt(max(0.0, 1 - x * x - y * y))
+            side.plot([x, x], [0, z], color="#bbbbbb", lw=0.6, ls=":")
+            side.plot([0, x], [0, z], color=LINE, lw=0.8)
+    side.annotate("", (0, 1.2), (0, 0), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.2))
+    side.text(0.05, 1.15, "n", color=ACCENT, fontsize=9)
+    side.set_title("from the side, a slice lifted onto the hemisphere:\ncrowded near n, sparse at the horizon",
+                   fontsize=9)
+    side.set_xlim(-1.2, 1.2)
+    side.set_ylim(-0.1, 1.35)
+    side.set_aspect("equal")
+    side.axis("off")
+    save(figure, out, "09_cosine_sampling.svg")
+
+
 def main():
     out = pathlib.Path(sys.argv[1])
     out.mkdir(parents=True, exist_ok=True)
@@ -1863,7 +1904,7 @@ def main():
     for draw in (tga_layout, bresenham_midpoint, edge_functions, barycentric_areas, painter_cycle, depth_mapping,
                  mip_footprint, frustum_ndc, clip_fan, perspective_edge, reflection_vectors, srgb_curve, normal_matrix,
                  mirrored_seam, tbn_frame, two_passes, acne, light_box_fit, normal_offset, pcf_kernel, tiles_and_bins, blocks, visibility_buffer,
-                 lane_queue, fragment_queue, block_rows, texel_words, srgb_entry, albedo_word, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
+                 lane_queue, fragment_queue, block_rows, texel_words, srgb_entry, albedo_word, shadow_pass, shadow_lookup, frame_path, cube_faces, latlong, reflect_refract, cosine_sampling, microfacets, lobe_lean, split_sum, ao_kernels, ao_horizon, gbuffer_passes, aa_patterns, aa_shading_rate):
         draw(out)
 
 

@@ -138,6 +138,7 @@ rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source,
     rl::dvec3 sum{0, 0, 0};
     const int count = std::max(samples, 1);
     for (int s = 0; s < count; ++s) {
+        // [doc:cosine-sample]
         // Cosine-distributed: a uniform point on the unit disc, lifted onto
         // the hemisphere (Malley's method); its pdf cos / pi cancels the cosine.
         const std::uint32_t h = hash(seed ^ hash(static_cast<std::uint32_t>(s)));
@@ -146,7 +147,8 @@ rl::vec3 irradiance_monte_carlo(const std::function<rl::vec3(rl::vec3)>& source,
         const rl::dvec3 d = frame.to_world({x, y, std::sqrt(std::max(0.0, 1 - x * x - y * y))});
         sum += rl::cast<double>(source(rl::cast<float>(d)));
     }
-    return rl::cast<float>(sum * (kPi / count));
+    return rl::cast<float>(sum * (kPi / count));  // each sample worth pi / N
+    // [/doc:cosine-sample]
 }
 
 DiffuseLight::DiffuseLight(const std::function<rl::vec3(rl::vec3)>& environment, Irradiance method,
