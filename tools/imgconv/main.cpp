@@ -53,8 +53,7 @@ int main(int argc, char** argv) {
                 throw std::invalid_argument("--stretch " + std::to_string(lo) + " " +
                                             std::to_string(hi) + ": LO must be below HI");
             const auto spread = [lo, hi](std::uint8_t v) {
-                return static_cast<std::uint8_t>(
-                    std::clamp((v - lo) * 255 / (hi - lo), 0, 255));
+                return static_cast<std::uint8_t>(std::clamp((v - lo) * 255 / (hi - lo), 0, 255));
             };
             for (int y = 0; y < image.height(); ++y)
                 for (int x = 0; x < image.width(); ++x) {

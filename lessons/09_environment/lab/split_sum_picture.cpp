@@ -31,8 +31,7 @@ int main(int argc, char** argv) {
         for (int y = 0; y < n; ++y)  // row 0 is the bottom row: roughness 0
             for (int x = 0; x < n; ++x) {
                 // The entries' own centres, as the table stores them.
-                const environment::SplitSum s =
-                    table.at((x + 0.5f) / n, (y + 0.5f) / n);
+                const environment::SplitSum s = table.at((x + 0.5f) / n, (y + 0.5f) / n);
                 image.set(x, y, {byte(s.scale), byte(s.bias), 0, 255});
             }
         rl::save_image(output, image, false);
