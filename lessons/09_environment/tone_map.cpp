@@ -16,10 +16,13 @@ float tone_map(float light, const Exposure& exposure) {
         case ToneMap::reinhard:
             return c / (1 + c);
         case ToneMap::aces:
-            return std::clamp((c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f), 0.0f,
-                              1.0f);
+            return std::clamp(aces_curve(c), 0.0f, 1.0f);
     }
     return 0;
+}
+
+float aces_curve(float c) {
+    return (c * (2.51f * c + 0.03f)) / (c * (2.43f * c + 0.59f) + 0.14f);
 }
 // [/doc:tone-map]
 

@@ -41,6 +41,10 @@ struct Exposure {
 // One value through the exposure and the curve: 0..1. NaN, negative or
 // infinite light gives 0 (an infinite value is not a colour).
 float tone_map(float light, const Exposure& exposure);
+
+// Narkowicz's ACES fit before tone_map clamps it: it passes 1 at light
+// 7.24 and tends to 2.51 / 2.43 (light 8 gives 1.003).
+float aces_curve(float light);
 rl::vec3 tone_map(rl::vec3 light, const Exposure& exposure);
 
 // The frame as sRGB bytes (alpha 255).
