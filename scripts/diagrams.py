@@ -1865,15 +1865,19 @@ def cosine_sampling(out):
     whose density is cos(theta) / pi: crowded about the normal, sparse at
     the horizon. The same sampling as irradiance_monte_carlo."""
     figure, (disc, side) = plt.subplots(1, 2, figsize=(7.2, 3.4))
-    count = 96
+    count, band = 256, 0.07
     points = []
     for i in range(count):
-        u, v = (i + 0.5) / count, int(format(i, "07b")[::-1], 2) / 128  # a Hammersley set
+        u, v = (i + 0.5) / count, int(format(i, "08b")[::-1], 2) / 256  # a Hammersley set
         r, phi = math.sqrt(u), 2 * math.pi * v
         points.append((r * math.cos(phi), r * math.sin(phi)))
     disc.add_patch(plt.Circle((0, 0), 1, fill=False, color=INK, lw=1))
-    disc.plot([p[0] for p in points], [p[1] for p in points], "o", ms=3, color=LINE)
-    disc.set_title("seen from above: even over the disc\nr = sqrt(u), phi = 2 pi v", fontsize=9)
+    disc.plot([p[0] for p in points], [p[1] for p in points], "o", ms=2.5, color=LINE)
+    sliced = [p for p in points if abs(p[1]) < band]
+    disc.plot([p[0] for p in sliced], [p[1] for p in sliced], "o", ms=3.5, color=ACCENT)
+    for y in (-band, band):
+        disc.plot([-1, 1], [y, y], color=ACCENT, lw=0.6, ls="--")
+    disc.set_title("seen from above: even over the disc\nr = sqrt(u), phi = 2 pi v; the slice in red", fontsize=9)
     disc.set_xlim(-1.15, 1.15)
     disc.set_ylim(-1.15, 1.15)
     disc.set_aspect("equal")
@@ -1882,13 +1886,13 @@ def cosine_sampling(out):
     side.add_patch(matplotlib.patches.Arc((0, 0), 2, 2, theta1=0, theta2=180, color=INK, lw=1))
     side.plot([-1.15, 1.15], [0, 0], color=INK, lw=1.2)
     for x, y in points:
-        if abs(y) < 0.12:
+        if abs(y) < band:
             z = math.sqrt(max(0.0, 1 - x * x - y * y))
             side.plot([x, x], [0, z], color="#bbbbbb", lw=0.6, ls=":")
             side.plot([0, x], [0, z], color=LINE, lw=0.8)
     side.annotate("", (0, 1.2), (0, 0), arrowprops=dict(arrowstyle="->", color=ACCENT, lw=1.2))
     side.text(0.05, 1.15, "n", color=ACCENT, fontsize=9)
-    side.set_title("from the side, a slice lifted onto the hemisphere:\ncrowded near n, sparse at the horizon",
+    side.set_title("the slice from the side, lifted onto the hemisphere:\ncrowded near n, sparse at the horizon",
                    fontsize=9)
     side.set_xlim(-1.2, 1.2)
     side.set_ylim(-0.1, 1.35)
