@@ -466,9 +466,10 @@ def draw_lines(plt, rows, options):
     else:
         all_axes[0].set_title(options.title, fontsize=10)
         handles, names = all_axes[0].get_legend_handles_labels()
+        place = dict(loc="upper center", bbox_to_anchor=(0.5, -0.14)) if options.legend_below else {}
         legend = all_axes[0].legend([legend_handle(h) for h in handles], names, fontsize=7, ncol=2,
                                     handlelength=4,  # long enough handles to show the dashes
-                                    title=all_axes[0].flat_note, title_fontsize=6.5)
+                                    title=all_axes[0].flat_note, title_fontsize=6.5, **place)
         legend.get_title().set_color("0.3")
     def before_save():
         if options.panel and not spares:
@@ -603,6 +604,8 @@ def main():
     parser.add_argument("--series-format", metavar="FORMAT",
                         help="with --series: name each line by this format of its row (as --label-format)")
     parser.add_argument("--style", help="with --series: line style per value of this column")
+    parser.add_argument("--legend-below", action="store_true",
+                        help="with --series: the legend under the chart, where it hides no line")
     parser.add_argument("--point-labels", help="with --series: name each point by this column's value")
     parser.add_argument("--label-format", metavar="FORMAT",
                         help="name each point by this Python format of its row's columns, e.g. "
@@ -653,11 +656,13 @@ def main():
     import matplotlib.pyplot as plt
 
     if options.csv.suffix == ".md":
-        # Redrawn from the chart's own table (the `replot` target): no lab run.
-        # The table holds the rows chosen when it was written, so a --where on
-        # a column it leaves out is already applied; it is not written again.
+        # Redrawn from a table (the `replot` target: the chart's own; no lab
+        # run). The table holds the rows chosen when it was written, so a
+        # --where on a column it leaves out is already applied. A chart drawn
+        # from another chart's table may write its own, never over its input.
         all_rows = read_table(options.csv)
-        options.table = None
+        if options.table and options.table.resolve() == options.csv.resolve():
+            sys.exit(f"--table {options.table}: the table this chart is drawn from")
     else:
         with options.csv.open() as f:
             all_rows = list(csv.DictReader(f))
