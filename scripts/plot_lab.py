@@ -76,19 +76,12 @@ def write_table(rows, columns, path, front_keys, key, fronts=True):
 
 def read_table(path):
     """The rows of a table this script wrote (its first Markdown table), as a
-    CSV's. Its best trade-off marks are kept, and the chart marks those rows:
-    found again from the table's rounded numbers, they could differ."""
-    header, rows = None, []
-    for line in path.read_text().splitlines():
-        if not line.startswith("|"):
-            if header:
-                break
-            continue
-        cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if header is None:
-            header = cells
-        elif not set(line) <= set("|-: "):
-            rows.append(dict(zip(header, cells)))
+    CSV's, read as the pages' value markers read it (doc_snippets.py). Its
+    best trade-off marks are kept, and the chart marks those rows: found again
+    from the table's rounded numbers, they could differ."""
+    from doc_snippets import table_rows  # beside this script
+
+    rows = table_rows(path)
     if not rows:
         sys.exit(f"{path}: no table")
     return rows
